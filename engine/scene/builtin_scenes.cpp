@@ -1,0 +1,207 @@
+#include "scene/builtin_scenes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <map>
+
+#include "scene/scene_json.h"
+
+namespace lamina {
+namespace {
+
+constexpr double half = 0.5;  // half extent of the unit box, in m
+
+// The ground of every box-on-ground scene: a static box (20, 0.5) whose top is at y = 0.
+BodyDescription ground(double half_width = 20.0) {
+  BodyDescription g;
+  g.name = "ground";
+  g.shape.half_extents = {half_width, 0.5};
+  g.position = {0.0, -0.5};
+  g.is_static = true;
+  return g;
+}
+
+BodyDescription box(const std::string& name, Vec2d position, Vec2d half_extents = {half, half},
+                    double angle = 0.0) {
+  BodyDescription b;
+  b.name = name;
+  b.shape.half_extents = half_extents;
+  b.position = position;
+  b.angle = angle;
+  return b;
+}
+
+Scene with(const std::string& name, const std::string& description,
+           std::vector<BodyDescription> bodies, std::vector<JointDescription> joints = {}) {
+  Scene s;
+  s.name = name;
+  s.description = description;
+  s.bodies = std::move(bodies);
+  s.joints = std::move(joints);
+  return s;
+}
+
+JointDescription revolute(const std::string& a, const std::string& b, Vec2d anchor) {
+  JointDescription j;
+  j.type = JointType::revolute;
+  j.bodies = {a, b};
+  j.anchor = anchor;
+  return j;
+}
+
+Scene box_on_ground(const std::string& name, double y, double angle, const std::string& what) {
+  return with(name, what, {ground(), box("box", {0.0, y}, {half, half}, angle)});
+}
+
+// A static ramp tilted by θ (a rotated box) with a box resting on its slope.
+Scene ramp(const std::string& name, const std::string& what, double theta, double friction) {
+  BodyDescription slope = box("ramp", {0.0, 0.0}, {10.0, 0.5}, theta);
+  slope.is_static = true;
+  slope.friction = friction;
+  const double lift = 0.5 + half;  // from the ramp's centre line to the box's centre
+  BodyDescription block = box("box", {-lift * std::sin(theta), lift * std::cos(theta)}, {half, half}, theta);
+  block.friction = friction;
+  return with(name, what, {slope, block});
+}
+
+Scene pendulum() {
+  BodyDescription pivot = box("pivot", {0.0, 3.0}, {0.1, 0.1});
+  pivot.is_static = true;
+  BodyDescription bob;
+  bob.name = "bob";
+  bob.shape.type = ShapeType::circle;
+  bob.shape.radius = 0.2;
+  bob.position = {2.0, 3.0};
+  JointDescription rod;
+  rod.type = JointType::distance;
+  rod.bodies = {"pivot", "bob"};
+  rod.anchors = {Vec2d{0.0, 3.0}, Vec2d{2.0, 3.0}};
+  return with("pendulum", "a disc on a 2 m rod, released horizontal (distance constraint)",
+              {pivot, bob}, {rod});
+}
+
+Scene chain() {
+  std::vector<BodyDescription> bodies = {ground()};
+  BodyDescription anchor = box("anchor", {0.0, 6.0}, {0.1, 0.1});
+  anchor.is_static = true;
+  bodies.push_back(anchor);
+  std::vector<JointDescription> joints;
+  const int links = 8;
+  for (int i = 0; i < links; ++i) {
+    const std::string name = "link" + std::to_string(i);
+    bodies.push_back(box(name, {0.25 + 0.5 * i, 6.0}, {0.25, 0.05}));
+    joints.push_back(revolute(i == 0 ? "anchor" : "link" + std::to_string(i - 1), name, {0.5 * i, 6.0}));
+  }
+  return with("chain", "eight links pinned end to end, released horizontal (revolute joints)",
+              bodies, joints);
+}
+
+Scene vertical_stack() {
+  std::vector<BodyDescription> bodies = {ground()};
+  for (int i = 0; i < 5; ++i) bodies.push_back(box("box" + std::to_string(i), {0.0, half + 2 * half * i}));
+  return with("vertical-stack", "five boxes placed touching, one on another", bodies);
+}
+
+Scene dominoes() {
+  std::vector<BodyDescription> bodies = {ground()};
+  for (int i = 0; i < 10; ++i) {
+    bodies.push_back(box("domino" + std::to_string(i), {1.0 * i, 1.0}, {0.1, 1.0}));
+  }
+  bodies[1].angular_velocity = -1.5;
+  return with("dominoes", "ten dominoes; the first is pushed over", bodies);
+}
+
+Scene bridge() {
+  std::vector<BodyDescription> bodies = {ground()};
+  for (int side = 0; side < 2; ++side) {
+    BodyDescription post = box(side == 0 ? "left-post" : "right-post", {side == 0 ? -5.5 : 5.5, 1.5}, {0.5, 1.5});
+    post.is_static = true;
+    bodies.push_back(post);
+  }
+  std::vector<JointDescription> joints;
+  const int planks = 10;
+  std::string previous = "left-post";
+  for (int i = 0; i < planks; ++i) {
+    const std::string name = "plank" + std::to_string(i);
+    bodies.push_back(box(name, {-4.5 + i + 0.5, 3.0}, {0.5, 0.1}));
+    joints.push_back(revolute(previous, name, {-5.0 + i, 3.0}));
+    previous = name;
+  }
+  joints.push_back(revolute(previous, "right-post", {5.0, 3.0}));
+  bodies.push_back(box("load", {0.0, 4.0}));
+  return with("bridge", "ten planks pinned end to end between two posts, a box dropped on them",
+              bodies, joints);
+}
+
+Scene see_saw() {
+  BodyDescription base = box("base", {0.0, 0.5}, {0.2, 0.5});
+  base.is_static = true;
+  BodyDescription plank = box("plank", {0.0, 1.1}, {3.0, 0.1});
+  BodyDescription weight = box("weight", {-2.5, 3.0});
+  return with("see-saw", "a plank pinned on a post; a box dropped on one end",
+              {ground(), base, plank, box("counterweight", {2.5, 1.7}, {0.25, 0.25}), weight},
+              {revolute("base", "plank", {0.0, 1.1})});
+}
+
+using Maker = std::function<Scene()>;
+
+const std::map<std::string, Maker>& makers() {
+  static const std::map<std::string, Maker> table = {
+      {"box-on-ground", [] { return box_on_ground("box-on-ground", 2.0, 0.0, "a box dropped flat from y = 2 onto the ground"); }},
+      {"box-on-ground-tilted", [] { return box_on_ground("box-on-ground-tilted", 2.0, 0.3, "a box dropped from y = 2 tilted by 0.3 rad (Fig 4-2..4-5)"); }},
+      {"box-on-ground-resting", [] { return box_on_ground("box-on-ground-resting", half, 0.0, "a box placed resting on the ground"); }},
+      {"incline", [] { return ramp("incline", "a box on a frictionless 30° incline (Fig 3-1)", M_PI / 6, 0.0); }},
+      {"friction-ramp", [] { return ramp("friction-ramp", "a box on a 30° ramp with μ = 0.4 < tan 30°: it slides", M_PI / 6, 0.4); }},
+      {"pendulum", pendulum},
+      {"chain", chain},
+      {"vertical-stack", vertical_stack},
+      {"pyramid", [] { return pyramid_scene(20); }},
+      {"dominoes", dominoes},
+      {"bridge", bridge},
+      {"see-saw", see_saw},
+  };
+  return table;
+}
+
+}  // namespace
+
+std::vector<BuiltinScene> builtin_scene_list() {
+  std::vector<BuiltinScene> list;
+  for (const auto& [name, make] : makers()) list.push_back({name, make().description});
+  return list;
+}
+
+Scene builtin_scene(const std::string& name) {
+  const std::string prefix = "pyramid:";
+  if (name.rfind(prefix, 0) == 0) {
+    const std::string rows = name.substr(prefix.size());
+    char* end = nullptr;
+    const long n = std::strtol(rows.c_str(), &end, 10);
+    if (rows.empty() || *end != '\0' || n < 1 || n > 1000) {
+      throw SceneError(name + ": pyramid rows must be a whole number in [1, 1000]");
+    }
+    return pyramid_scene(static_cast<int>(n));
+  }
+  const auto it = makers().find(name);
+  if (it == makers().end()) throw SceneError(name + ": no such built-in scene (see `lamina scenes`)");
+  return it->second();
+}
+
+Scene pyramid_scene(int rows) {
+  std::vector<BodyDescription> bodies = {ground(std::max(20.0, rows * half + 5.0))};
+  for (int row = 0; row < rows; ++row) {
+    const int count = rows - row;
+    for (int i = 0; i < count; ++i) {
+      const double x = (i - 0.5 * (count - 1)) * 2 * half;
+      bodies.push_back(box("r" + std::to_string(row) + "b" + std::to_string(i), {x, half + 2 * half * row}));
+    }
+  }
+  Scene s = with("pyramid", "a pyramid of " + std::to_string(rows * (rows + 1) / 2) +
+                 " boxes placed touching, " + std::to_string(rows) + " in its base", bodies);
+  if (rows != 20) s.name = "pyramid:" + std::to_string(rows);
+  return s;
+}
+
+}  // namespace lamina

@@ -1,0 +1,299 @@
+#include "scene/scene_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+namespace lamina {
+namespace {
+
+using nlohmann::json;
+
+constexpr double max_friction = 10.0;  // μ beyond this is surely a typing error
+
+// A number in its shortest form that reads back to the same double, without a trailing ".0".
+std::string shortest(double value) {
+  std::string text = json(value).dump();
+  if (text.size() > 2 && text.compare(text.size() - 2, 2, ".0") == 0) text.resize(text.size() - 2);
+  return text;
+}
+
+// Walks a JSON document, knowing where it is, and throws one SceneError line per problem.
+class Reader {
+ public:
+  explicit Reader(std::string origin) : origin_(std::move(origin)) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw SceneError(origin_ + ": " + (path.empty() ? "(top level)" : path) + ": " + what);
+  }
+
+  void expect_object(const json& j, const std::string& path,
+                     const std::set<std::string>& allowed) const {
+    if (!j.is_object()) fail(path, "must be an object, got " + type_of(j));
+    for (const auto& item : j.items()) {
+      if (allowed.count(item.key()) == 0) {
+        fail(join(path, item.key()), "unknown key (allowed: " + list(allowed) + ")");
+      }
+    }
+  }
+
+  double number(const json& j, const std::string& path) const {
+    if (!j.is_number()) fail(path, "must be a number, got " + type_of(j));
+    const double value = j.get<double>();
+    if (!std::isfinite(value)) fail(path, "must be finite, got " + j.dump());
+    return value;
+  }
+
+  double positive(const json& j, const std::string& path) const {
+    const double value = number(j, path);
+    if (value <= 0.0) fail(path, "must be positive, got " + shortest(value));
+    return value;
+  }
+
+  double in_range(const json& j, const std::string& path, double lo, double hi) const {
+    const double value = number(j, path);
+    if (value < lo || value > hi) {
+      fail(path, "must be in [" + shortest(lo) + ", " + shortest(hi) + "], got " + shortest(value));
+    }
+    return value;
+  }
+
+  int count(const json& j, const std::string& path, int lo, int hi) const {
+    if (!j.is_number_integer()) fail(path, "must be a whole number, got " + j.dump());
+    const auto value = j.get<long long>();
+    if (value < lo || value > hi) {
+      fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+                     std::to_string(value));
+    }
+    return static_cast<int>(value);
+  }
+
+  bool boolean(const json& j, const std::string& path) const {
+    if (!j.is_boolean()) fail(path, "must be true or false, got " + type_of(j));
+    return j.get<bool>();
+  }
+
+  std::string text(const json& j, const std::string& path) const {
+    if (!j.is_string()) fail(path, "must be a string, got " + type_of(j));
+    return j.get<std::string>();
+  }
+
+  const json& array(const json& j, const std::string& path, size_t size) const {
+    if (!j.is_array()) fail(path, "must be an array, got " + type_of(j));
+    if (size != 0 && j.size() != size) {
+      fail(path, "must have " + std::to_string(size) + " elements, got " + std::to_string(j.size()));
+    }
+    return j;
+  }
+
+  Vec2d vec2(const json& j, const std::string& path) const {
+    array(j, path, 2);
+    return {number(j[0], at(path, 0)), number(j[1], at(path, 1))};
+  }
+
+  const json& required(const json& obj, const std::string& path, const char* key,
+                       const std::string& hint = "") const {
+    if (!obj.contains(key)) fail(join(path, key), "is missing" + hint);
+    return obj.at(key);
+  }
+
+  void forbid(const json& obj, const std::string& path, const char* key, const std::string& why) const {
+    if (obj.contains(key)) fail(join(path, key), why);
+  }
+
+  static std::string join(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  }
+  static std::string at(const std::string& path, size_t index) {
+    return path + "[" + std::to_string(index) + "]";
+  }
+
+ private:
+  static std::string type_of(const json& j) {
+    return j.is_number() ? "number " + j.dump() : std::string(j.type_name());
+  }
+  static std::string list(const std::set<std::string>& keys) {
+    std::string out;
+    for (const std::string& key : keys) out += (out.empty() ? "" : ", ") + key;
+    return out;
+  }
+
+  std::string origin_;
+};
+
+// Reads obj[key] into `target` with the Reader method `read` when the key is present.
+template <typename T, typename... Extra>
+void optional(const Reader& r, const json& obj, const std::string& path, const char* key, T& target,
+              T (Reader::*read)(const json&, const std::string&, Extra...) const, Extra... extra) {
+  if (obj.contains(key)) target = (r.*read)(obj.at(key), Reader::join(path, key), extra...);
+}
+
+ShapeDescription read_shape(const Reader& r, const json& j, const std::string& path) {
+  r.expect_object(j, path, {"type", "half_extents", "radius"});
+  const std::string type_path = Reader::join(path, "type");
+  const std::string type = r.text(r.required(j, path, "type", " (\"box\" or \"circle\")"), type_path);
+  ShapeDescription shape;
+  if (type == "box") {
+    r.forbid(j, path, "radius", "a box has no radius (use half_extents)");
+    shape.type = ShapeType::box;
+    const std::string hp = Reader::join(path, "half_extents");
+    const json& he = r.array(r.required(j, path, "half_extents"), hp, 2);
+    shape.half_extents = {r.positive(he[0], Reader::at(hp, 0)), r.positive(he[1], Reader::at(hp, 1))};
+  } else if (type == "circle") {
+    r.forbid(j, path, "half_extents", "a circle has no half extents (use radius)");
+    shape.type = ShapeType::circle;
+    shape.radius = r.positive(r.required(j, path, "radius"), Reader::join(path, "radius"));
+  } else {
+    r.fail(type_path, "must be \"box\" or \"circle\", got \"" + type + "\"");
+  }
+  return shape;
+}
+
+BodyDescription read_body(const Reader& r, const json& j, const std::string& path) {
+  r.expect_object(j, path, {"name", "shape", "position", "angle", "static", "density", "friction",
+                            "restitution", "velocity", "angular_velocity"});
+  BodyDescription body;
+  body.name = r.text(r.required(j, path, "name"), Reader::join(path, "name"));
+  if (body.name.empty()) r.fail(Reader::join(path, "name"), "must not be empty");
+  body.shape = read_shape(r, r.required(j, path, "shape"), Reader::join(path, "shape"));
+  optional(r, j, path, "position", body.position, &Reader::vec2);
+  optional(r, j, path, "angle", body.angle, &Reader::number);
+  optional(r, j, path, "static", body.is_static, &Reader::boolean);
+  optional(r, j, path, "density", body.density, &Reader::positive);
+  optional(r, j, path, "friction", body.friction, &Reader::in_range, 0.0, max_friction);
+  optional(r, j, path, "restitution", body.restitution, &Reader::in_range, 0.0, 1.0);
+  optional(r, j, path, "velocity", body.velocity, &Reader::vec2);
+  optional(r, j, path, "angular_velocity", body.angular_velocity, &Reader::number);
+  return body;
+}
+
+JointDescription read_joint(const Reader& r, const json& j, const std::string& path,
+                            const std::set<std::string>& body_names) {
+  r.expect_object(j, path, {"type", "bodies", "anchor", "anchors"});
+  JointDescription joint;
+  const std::string type_path = Reader::join(path, "type");
+  const std::string type =
+      r.text(r.required(j, path, "type", " (\"revolute\" or \"distance\")"), type_path);
+  const std::string bp = Reader::join(path, "bodies");
+  const json& names = r.array(r.required(j, path, "bodies"), bp, 2);
+  for (size_t k = 0; k < 2; ++k) {
+    joint.bodies[k] = r.text(names[k], Reader::at(bp, k));
+    if (body_names.count(joint.bodies[k]) == 0) {
+      r.fail(Reader::at(bp, k), "no body is named \"" + joint.bodies[k] + "\"");
+    }
+  }
+  if (joint.bodies[0] == joint.bodies[1]) {
+    r.fail(bp, "a joint needs two different bodies, got \"" + joint.bodies[0] + "\" twice");
+  }
+  if (type == "revolute") {
+    r.forbid(j, path, "anchors", "a revolute joint has one world anchor (use anchor)");
+    joint.type = JointType::revolute;
+    joint.anchor = r.vec2(r.required(j, path, "anchor"), Reader::join(path, "anchor"));
+  } else if (type == "distance") {
+    r.forbid(j, path, "anchor", "a distance joint has two anchors (use anchors)");
+    joint.type = JointType::distance;
+    const std::string ap = Reader::join(path, "anchors");
+    const json& anchors = r.array(r.required(j, path, "anchors"), ap, 2);
+    joint.anchors = {r.vec2(anchors[0], Reader::at(ap, 0)), r.vec2(anchors[1], Reader::at(ap, 1))};
+  } else {
+    r.fail(type_path, "must be \"revolute\" or \"distance\", got \"" + type + "\"");
+  }
+  return joint;
+}
+
+Scene read_scene(const Reader& r, const json& j) {
+  r.expect_object(j, "", {"name", "description", "gravity", "dt", "iterations", "beta", "steps",
+                          "bodies", "joints"});
+  Scene scene;
+  optional(r, j, "", "name", scene.name, &Reader::text);
+  optional(r, j, "", "description", scene.description, &Reader::text);
+  optional(r, j, "", "gravity", scene.gravity, &Reader::vec2);
+  optional(r, j, "", "dt", scene.dt, &Reader::in_range, 1e-5, 1.0);
+  optional(r, j, "", "iterations", scene.iterations, &Reader::count, 0, 10000);
+  optional(r, j, "", "beta", scene.beta, &Reader::in_range, 0.0, 1.0);
+  optional(r, j, "", "steps", scene.steps, &Reader::count, 0, 10000000);
+  const json& bodies = r.array(r.required(j, "", "bodies"), "bodies", 0);
+  std::set<std::string> names;
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    scene.bodies.push_back(read_body(r, bodies[i], Reader::at("bodies", i)));
+    if (!names.insert(scene.bodies.back().name).second) {
+      r.fail(Reader::at("bodies", i) + ".name", "duplicate body name \"" + scene.bodies.back().name + "\"");
+    }
+  }
+  if (j.contains("joints")) {
+    const json& joints = r.array(j.at("joints"), "joints", 0);
+    for (size_t i = 0; i < joints.size(); ++i) {
+      scene.joints.push_back(read_joint(r, joints[i], Reader::at("joints", i), names));
+    }
+  }
+  return scene;
+}
+
+json vec2_json(const Vec2d& v) { return json::array({v[0], v[1]}); }
+
+json shape_json(const ShapeDescription& shape) {
+  if (shape.type == ShapeType::circle) return {{"type", "circle"}, {"radius", shape.radius}};
+  return {{"type", "box"}, {"half_extents", vec2_json(shape.half_extents)}};
+}
+
+json body_json(const BodyDescription& b) {
+  json j = {{"name", b.name}, {"shape", shape_json(b.shape)}, {"position", vec2_json(b.position)},
+            {"angle", b.angle}, {"static", b.is_static}, {"friction", b.friction},
+            {"restitution", b.restitution}};
+  if (!b.is_static) {
+    j["density"] = b.density;
+    j["velocity"] = vec2_json(b.velocity);
+    j["angular_velocity"] = b.angular_velocity;
+  }
+  return j;
+}
+
+json joint_json(const JointDescription& joint) {
+  json j = {{"bodies", {joint.bodies[0], joint.bodies[1]}}};
+  if (joint.type == JointType::revolute) {
+    j["type"] = "revolute";
+    j["anchor"] = vec2_json(joint.anchor);
+  } else {
+    j["type"] = "distance";
+    j["anchors"] = {vec2_json(joint.anchors[0]), vec2_json(joint.anchors[1])};
+  }
+  return j;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& json_text, const std::string& origin) {
+  const Reader reader(origin);
+  json document;
+  try {
+    document = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    throw SceneError(origin + ": not valid JSON: " + e.what());
+  } catch (const json::out_of_range& e) {
+    throw SceneError(origin + ": a number is not finite as a double: " + e.what());
+  }
+  return read_scene(reader, document);
+}
+
+Scene read_scene_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path + ": cannot open the scene file");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse_scene(text, path);
+}
+
+std::string scene_to_json(const Scene& scene) {
+  json j = {{"name", scene.name}, {"description", scene.description},
+            {"gravity", vec2_json(scene.gravity)}, {"dt", scene.dt},
+            {"iterations", scene.iterations}, {"beta", scene.beta}, {"steps", scene.steps},
+            {"bodies", json::array()}, {"joints", json::array()}};
+  for (const BodyDescription& body : scene.bodies) j["bodies"].push_back(body_json(body));
+  for (const JointDescription& joint : scene.joints) j["joints"].push_back(joint_json(joint));
+  return j.dump(2) + "\n";
+}
+
+}  // namespace lamina
