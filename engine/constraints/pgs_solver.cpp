@@ -30,15 +30,9 @@ PgsResult solve_pgs(const Mlcp& mlcp, const Eigen::VectorXd& lambda_exp, const P
   PgsResult result;
   result.lambda = lambda_exp;
   std::vector<Vec6> a = transpose_multiply(mlcp, result.lambda);
-  const bool measure = settings.record_residuals || settings.tolerance > 0.0;
-  for (int iter = 0; iter < settings.iterations; ++iter) {
-    sweep(mlcp, result.lambda, a);
-    result.iterations = iter + 1;
-    if (!measure) continue;
-    const double residual = mlcp_residual(mlcp, result.lambda);
-    if (settings.record_residuals) result.residuals.push_back(residual);
-    if (residual <= settings.tolerance) break;
-  }
+  run_sweeps(
+      settings, [&] { sweep(mlcp, result.lambda, a); },
+      [&] { return mlcp_residual(mlcp, result.lambda); }, result);
   return result;
 }
 

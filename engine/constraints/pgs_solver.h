@@ -21,6 +21,24 @@ struct PgsResult {
   std::vector<double> residuals;   // the MLCP residual after each sweep, when recorded
 };
 
+// Runs sweep() up to settings.iterations times, counting them in result.iterations. After each
+// sweep, when residuals are recorded or a tolerance is set, measures residual() (one double),
+// records it if asked, and stops once it is ≤ a tolerance > 0. Recording alone never changes
+// the sweeps run, so λ is the same bit for bit with or without it. Shared by Gauss-Seidel and PGS.
+template <class Sweep, class Residual>
+void run_sweeps(const PgsSettings& settings, Sweep&& sweep, Residual&& residual,
+                PgsResult& result) {
+  const bool measure = settings.record_residuals || settings.tolerance > 0.0;
+  for (int iter = 0; iter < settings.iterations; ++iter) {
+    sweep();
+    result.iterations = iter + 1;
+    if (!measure) continue;
+    const double r = residual();
+    if (settings.record_residuals) result.residuals.push_back(r);
+    if (settings.tolerance > 0.0 && r <= settings.tolerance) break;
+  }
+}
+
 // Solves J B λ = η within the rows' bounds, starting from the guess λ_exp (warm start).
 // Follows the text's pseudo-code with its two faults mended: TransposeMultiply scales by λ[i]
 // (the text writes λ[b1], λ[b2]), and a one-body row (Jmap[1] = −1) never reads a[−1].

@@ -1,0 +1,29 @@
+#include "constraints/incline_constraint.h"
+
+#include <cmath>
+
+#include "constraints/jacobian_rows.h"
+
+namespace lamina {
+
+InclineConstraint::InclineConstraint(int body, const Vec3& p, const Vec3& normal)
+    : body_(body), p_(p), normal_(normal) {
+  const std::string what = "incline constraint";
+  require_input(body >= 0, what, "needs a body index ≥ 0, got " + std::to_string(body));
+  require_input(p.allFinite(), what, "point p is not finite");
+  require_input(normal.allFinite() && std::abs(normal.norm() - 1.0) <= 1e-9, what,
+                "normal N must be a unit vector, |N| = " + std::to_string(normal.norm()));
+}
+
+void InclineConstraint::write_rows(const std::vector<RigidBody>& bodies, double dt, double beta,
+                                   std::vector<ConstraintRow>& rows) const {
+  // J = [ Nᵀ 0ᵀ ]: the incline is the world side, the body's centre the other
+  ConstraintRow row = point_row(bodies, Anchor{world, p_}, Anchor{body_, Vec3::Zero()}, normal_);
+  // eq. 3-13: ε = (x − p) · N
+  const double C = (bodies[body_].x - p_).dot(normal_);
+  // eq. 3-14
+  row.zeta = equality_bias(C, dt, beta);
+  rows.push_back(row);
+}
+
+}  // namespace lamina
