@@ -1,0 +1,33 @@
+// Broad phase: which pairs of bodies may touch, by sort and sweep on x (beyond the text, which
+// leaves collision detection out; DIGEST item 6).
+//
+//   1. sort the bodies by the left edge min.x of their bounding boxes;
+//   2. sweep left to right: body i can only overlap the bodies after it whose min.x ≤ max.x of i;
+//   3. of those, keep the ones whose boxes also overlap in y.
+// The pairs come out as (first < second), sorted by first then second, so the rows built from
+// them, and so every result, do not depend on how the sort broke ties.
+#pragma once
+
+#include <vector>
+
+#include "contact/shape.h"
+
+namespace lamina {
+
+// Two bodies that may touch, by index into the world's bodies; first < second.
+struct BodyPair {
+  int first = 0;   // the lower body index: "body 1" of eq. 4-1
+  int second = 0;  // the higher body index: "body 2" of eq. 4-1
+
+  bool operator<(const BodyPair& o) const {
+    return first < o.first || (first == o.first && second < o.second);
+  }
+  bool operator==(const BodyPair& o) const { return first == o.first && second == o.second; }
+};
+
+// The pairs of overlapping (or touching) boxes, sorted. `order` is scratch space for the
+// sorted body indices; passing the same vector every step keeps the step free of allocation.
+void sort_and_sweep(const std::vector<Aabb>& boxes, std::vector<int>& order,
+                    std::vector<BodyPair>& pairs);
+
+}  // namespace lamina

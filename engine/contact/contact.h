@@ -1,0 +1,59 @@
+// A contact point kept from step to step, and the pair of bodies it belongs to
+// (chapter 4 "Contact caching", Fig 4-2..4-5; chapter 5, eq. 5-12).
+//
+//   p_k = x_k + R_k r_k     the contact's point on body k, re-placed from its anchor (eq. 5-12)
+//   r_k = R_kᵀ (p_k − x_k)  the anchor, stored when the point is found (eq. 5-12)
+//   C   = (p2 − p1) · n     the separation of eq. 4-1 (< 0: penetrating)
+//   c   = (p1 + p2) / 2     the contact point where the rows' levers r1 = c − x1, r2 = c − x2 end
+// n is stored in the frame of its reference body (the one whose surface it is normal to), so
+// it turns with that body, as the text's n1 does (the ω1 × n1 term of eq. 4-2).
+#pragma once
+
+#include <array>
+
+#include "contact/broad_phase.h"
+#include "contact/narrow_phase.h"
+
+namespace lamina {
+
+struct Contact {
+  std::array<Vec2, 2> anchor{Vec2::Zero(), Vec2::Zero()};  // r_k on each body's surface, body k's frame, in m (eq. 5-12)
+  Vec2 local_normal = Vec2::UnitY();  // n in the reference body's frame, unit, body 1 → body 2
+  int reference = 0;                  // the body n is normal to: 0 (body 1) or 1 (body 2)
+  double lambda_normal = 0.0;         // λ of the contact row at the last solve, in N (warm start)
+  double lambda_tangent = 0.0;        // λ of the friction row along u1 at the last solve, in N
+
+  // Measured every step, from the narrow phase or from the anchors:
+  Vec2 point = Vec2::Zero();          // c, midway between the two surface points, world, in m
+  Vec2 normal = Vec2::UnitY();        // n, world, unit, body 1 → body 2
+  double separation = 0.0;            // C of eq. 4-1, in m; −depth when penetrating
+  double drift = 0.0;                 // |(p2 − p1) − C n|, how far the anchors slid apart, in m
+  bool fresh = false;                 // found by this step's narrow phase; else re-placed from cache
+};
+
+// The contacts of one pair of bodies: at most two in the plane (see ContactCache).
+struct ContactPair {
+  BodyPair bodies;                    // (body 1, body 2), body 1 < body 2
+  double friction = 0.0;              // μ of the pair, √(μ1 μ2)
+  double restitution = 0.0;           // e of the pair, max(e1, e2)
+  int capacity = 2;                   // most contacts kept: 2 for box–box, 1 with a circle
+  int count = 0;                      // contacts in use
+  std::array<Contact, 2> contacts{};  // the first `count` are in use
+};
+
+// A contact from the narrow phase's deepest point: the incident body's point is `point`, the
+// reference body's is `depth` above it on the reference surface; both anchored (eq. 5-12).
+Contact make_contact(const Collision& collision, const Pose2& pose1, const Pose2& pose2);
+
+// Re-places a contact from its anchors at the bodies' current poses and re-measures it:
+// point, normal, separation (eq. 4-1) and drift.
+void place(Contact& contact, const Pose2& pose1, const Pose2& pose2);
+
+// Moves the reference body's anchor under the incident body's point, so the drift is zero and
+// the separation unchanged (notes fix 3: a sliding contact is re-anchored, not dropped).
+void reanchor(Contact& contact, const Pose2& pose1, const Pose2& pose2);
+
+// The reference body's point of a contact, world frame.
+Vec2 reference_point(const Contact& contact, const Pose2& pose1, const Pose2& pose2);
+
+}  // namespace lamina

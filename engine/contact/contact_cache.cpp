@@ -1,0 +1,114 @@
+#include "contact/contact_cache.h"
+
+#include <algorithm>
+
+namespace lamina {
+namespace {
+
+// A re-anchored reference point off its body by more than this has left the surface.
+constexpr double surface_tolerance = 1e-9;  // in m
+
+ContactPair new_pair(const BodyPair& bodies, const std::vector<Shape>& shapes,
+                     const std::vector<Material>& materials) {
+  ContactPair pair;
+  pair.bodies = bodies;
+  pair.friction = combined_friction(materials[bodies.first], materials[bodies.second]);
+  pair.restitution = combined_restitution(materials[bodies.first], materials[bodies.second]);
+  pair.capacity = shapes[bodies.first].is_box() && shapes[bodies.second].is_box() ? 2 : 1;
+  return pair;
+}
+
+// Step 1: re-place, re-measure, re-anchor or drop the cached points of a pair.
+void refresh(ContactPair& pair, const std::vector<Pose2>& poses, const std::vector<Shape>& shapes,
+             const CacheSettings& settings) {
+  const Pose2& pose1 = poses[pair.bodies.first];
+  const Pose2& pose2 = poses[pair.bodies.second];
+  int kept = 0;
+  for (int k = 0; k < pair.count; ++k) {
+    Contact c = pair.contacts[k];
+    place(c, pose1, pose2);
+    c.fresh = false;
+    if (c.drift > settings.drift_limit) {
+      reanchor(c, pose1, pose2);
+      const int ref_body = c.reference == 0 ? pair.bodies.first : pair.bodies.second;
+      if (!contains(shapes[ref_body], poses[ref_body], reference_point(c, pose1, pose2),
+                    surface_tolerance)) {
+        continue;
+      }
+    }
+    if (c.separation > settings.keep_margin) continue;
+    pair.contacts[kept++] = c;
+  }
+  pair.count = kept;
+}
+
+// Step 2: the fresh deepest point replaces a nearby cached point (inheriting its λ), is added,
+// or replaces the cached point nearer to it when the pair is full.
+void merge(ContactPair& pair, Contact fresh, const CacheSettings& settings) {
+  int nearest = -1;
+  double nearest_distance = 0.0;
+  for (int k = 0; k < pair.count; ++k) {
+    const double d = (pair.contacts[k].point - fresh.point).norm();
+    if (nearest < 0 || d < nearest_distance) {
+      nearest = k;
+      nearest_distance = d;
+    }
+  }
+  const bool same_point =
+      nearest >= 0 && (pair.capacity == 1 || nearest_distance <= settings.merge_distance);
+  if (same_point) {
+    fresh.lambda_normal = pair.contacts[nearest].lambda_normal;
+    fresh.lambda_tangent = pair.contacts[nearest].lambda_tangent;
+    pair.contacts[nearest] = fresh;
+  } else if (pair.count < pair.capacity) {
+    pair.contacts[pair.count++] = fresh;
+  } else {
+    pair.contacts[nearest] = fresh;
+  }
+}
+
+}  // namespace
+
+CachedPoints ContactCache::cached_points(const BodyPair& bodies,
+                                         const std::vector<Pose2>& poses) const {
+  CachedPoints cached;
+  const auto it = std::lower_bound(pairs_.begin(), pairs_.end(), bodies,
+                                   [](const ContactPair& p, const BodyPair& b) { return p.bodies < b; });
+  if (it == pairs_.end() || !(it->bodies == bodies)) return cached;
+  for (int k = 0; k < it->count; ++k) {
+    Contact c = it->contacts[k];
+    place(c, poses[bodies.first], poses[bodies.second]);
+    cached.points[cached.count++] = c.point;
+  }
+  return cached;
+}
+
+void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::vector<Pose2>& poses,
+                          const std::vector<Shape>& shapes, const std::vector<Material>& materials,
+                          const CacheSettings& settings) {
+  if (!settings.enabled) pairs_.clear();
+  next_.clear();
+  // Walk the cached pairs and the fresh collisions together, both sorted by pair.
+  auto cached = pairs_.begin();
+  auto found = fresh.begin();
+  while (cached != pairs_.end() || found != fresh.end()) {
+    const bool take_cached =
+        cached != pairs_.end() && (found == fresh.end() || !(found->bodies < cached->bodies));
+    const bool take_fresh =
+        found != fresh.end() && (cached == pairs_.end() || !(cached->bodies < found->bodies));
+    ContactPair pair = take_cached ? *cached : new_pair(found->bodies, shapes, materials);
+    if (take_cached) {
+      refresh(pair, poses, shapes, settings);
+      ++cached;
+    }
+    if (take_fresh) {
+      merge(pair, make_contact(found->collision, poses[pair.bodies.first], poses[pair.bodies.second]),
+            settings);
+      ++found;
+    }
+    if (pair.count > 0) next_.push_back(pair);
+  }
+  pairs_.swap(next_);
+}
+
+}  // namespace lamina

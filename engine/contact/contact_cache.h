@@ -1,0 +1,58 @@
+// The contact cache of chapter 4 (Fig 4-2..4-5) and chapter 5 (eq. 5-12).
+//
+// The narrow phase finds one point per pair per step, the deepest. A box resting on the ground
+// needs two. The cache remembers last step's points in both bodies' frames and, every step:
+//   1. re-places each cached point from its anchors (eq. 5-12) and re-measures C (eq. 4-1);
+//      a point whose anchors slid apart by more than drift_limit is re-anchored (notes fix 3);
+//      a point is dropped once C > keep_margin, or when re-anchoring moves it off the
+//      reference body's surface (a box sliding off a ledge);
+//   2. merges the fresh deepest point: within merge_distance of a cached point it replaces that
+//      point and inherits its λ; otherwise it is added; a full pair keeps the fresh point and
+//      the cached point farthest from it.
+// A pair keeps at most two points: two convex shapes in the plane touch along at most one
+// segment, and its two ends carry any load it can carry. A circle touches at one point, so a
+// pair with a circle keeps one, and the fresh point always takes over its λ.
+// Each cached point keeps last step's λ (normal and friction) as the PGS starting guess.
+// Switched off, the cache holds only this step's fresh points, with λ = 0 (no warm start).
+#pragma once
+
+#include <vector>
+
+#include "contact/contact.h"
+
+namespace lamina {
+
+struct CacheSettings {
+  bool enabled = true;          // keep points between steps and warm start from their λ
+  double keep_margin = 0.01;    // a cached point is dropped once its separation C exceeds this, in m
+  double merge_distance = 0.02; // a fresh point this close to a cached one replaces it, in m
+  double drift_limit = 0.01;    // anchors that slid apart by more than this are re-anchored, in m
+  double tie_tolerance = 5e-4;  // vertices this close to the deepest count as equally deep, in m
+};
+
+// The narrow phase's result for one pair.
+struct FreshCollision {
+  BodyPair bodies;      // the pair, body 1 < body 2
+  Collision collision;  // its deepest point
+};
+
+class ContactCache {
+ public:
+  // The pairs with contacts, sorted by (body 1, body 2).
+  const std::vector<ContactPair>& pairs() const { return pairs_; }
+  std::vector<ContactPair>& pairs() { return pairs_; }
+
+  // The cached points of a pair re-placed at the current poses, for the narrow phase's ties.
+  CachedPoints cached_points(const BodyPair& bodies, const std::vector<Pose2>& poses) const;
+
+  // Steps 1 and 2 above. `fresh` must be sorted by pair; materials give a new pair's μ and e.
+  void update(const std::vector<FreshCollision>& fresh, const std::vector<Pose2>& poses,
+              const std::vector<Shape>& shapes, const std::vector<Material>& materials,
+              const CacheSettings& settings);
+
+ private:
+  std::vector<ContactPair> pairs_;  // this step's pairs, sorted
+  std::vector<ContactPair> next_;   // scratch for the update, kept to avoid allocation
+};
+
+}  // namespace lamina

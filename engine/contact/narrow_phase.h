@@ -1,0 +1,54 @@
+// Narrow phase: the deepest point of a pair, as the text's collision detection returns it
+// (chapter 4, Fig 4-2: "only the single deepest point"). The text leaves the algorithm out
+// (DIGEST item 6); Lamina's is planar and written for clarity.
+//
+//   point      the incident body's point deepest inside the reference body
+//   normal n   unit, from body 1 to body 2 (the n1 of eq. 4-1)
+//   depth      how far `point` is inside, along n, in m; 0 when exactly touching (still a contact)
+//   reference  the body whose surface n is normal to; the other body is the incident one
+//
+// Box–box: the separating axis test over both boxes' face normals. For a face with outward
+// normal n_f at distance h_f from the reference centre x_r, the separation of the other box is
+//   s_f = min over its vertices v of  n_f · (v − x_r) − h_f
+// The boxes overlap (or touch) when the largest s_f over all eight faces is ≤ 0; that face is
+// the reference face and the depth of a vertex inside the reference box is −(n_f · (v − x_r) − h_f).
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "contact/shape.h"
+
+namespace lamina {
+
+struct Collision {
+  Vec2 point = Vec2::Zero();   // the deepest point, world frame, in m
+  Vec2 normal = Vec2::UnitY(); // n, unit, from body 1 to body 2
+  double depth = 0.0;          // penetration of `point` along n, in m (≥ 0)
+  int reference = 0;           // 0: n is normal to body 1's surface; 1: to body 2's
+};
+
+// The points a pair's cache already holds (world frame), for breaking ties between equally deep
+// vertices: the narrow phase returns the one farthest from them.
+struct CachedPoints {
+  std::array<Vec2, 2> points{Vec2::Zero(), Vec2::Zero()};  // world points, in m
+  int count = 0;                                            // how many are valid
+};
+
+// The deepest point of two shapes at their poses, or nothing when they are apart.
+// Vertices within `tie_tolerance` (m) of the deepest count as equally deep: the one farthest
+// from `cached` is returned, or on a first contact (no cached points) their midpoint.
+std::optional<Collision> collide(const Shape& shape1, const Pose2& pose1, const Shape& shape2,
+                                 const Pose2& pose2, const CachedPoints& cached,
+                                 double tie_tolerance);
+
+// The three pair types; `collide` dispatches to them (box–circle also serves circle–box).
+std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, const Shape& box2,
+                                       const Pose2& pose2, const CachedPoints& cached,
+                                       double tie_tolerance);
+std::optional<Collision> collide_box_circle(const Shape& box, const Pose2& box_pose,
+                                            const Shape& circle, const Pose2& circle_pose);
+std::optional<Collision> collide_circles(const Shape& circle1, const Pose2& pose1,
+                                         const Shape& circle2, const Pose2& pose2);
+
+}  // namespace lamina

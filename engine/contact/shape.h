@@ -1,0 +1,60 @@
+// The shapes of chapter 4's collision detection, the material of a body, and their bounding boxes.
+//
+//   box     half extents (hx, hy): the points |r_x| ≤ hx, |r_y| ≤ hy of the body frame
+//   circle  radius ρ: the points |r| ≤ ρ of the body frame
+//   μ       friction coefficient of a pair: √(μ1 μ2)        (Box2D's rule, beyond the text)
+//   e       restitution of a pair: max(e1, e2)               (Box2D's rule, beyond the text)
+// Shapes are centred on the body's centre of mass; a static body may be any shape (the ground
+// is a static box).
+#pragma once
+
+#include "contact/planar.h"
+
+namespace lamina {
+
+struct Shape {
+  enum class Kind { box, circle };
+  Kind kind = Kind::box;                    // which of the two shapes
+  Vec2 half_extents = Vec2(0.5, 0.5);      // (hx, hy) of a box, in m
+  double radius = 0.0;                      // ρ of a circle, in m
+
+  // Throw std::invalid_argument unless the sizes are finite and positive.
+  static Shape box(double half_x, double half_y);
+  static Shape circle(double radius);
+
+  bool is_box() const { return kind == Kind::box; }
+};
+
+// How two bodies rub and bounce. Box2D's fixture defaults, so comparisons start equal.
+struct Material {
+  double friction = 0.2;     // μ, dimensionless, ≥ 0
+  double restitution = 0.0;  // e, the fraction of approach speed returned, in [0, 1]
+};
+
+// μ of a pair: √(μ1 μ2) (Box2D's b2MixFriction; the text gives one μ per pair).
+double combined_friction(const Material& a, const Material& b);
+// e of a pair: max(e1, e2) (Box2D's b2MixRestitution; restitution is beyond the text).
+double combined_restitution(const Material& a, const Material& b);
+
+// An axis-aligned bounding box in the plane.
+struct Aabb {
+  Vec2 min = Vec2::Zero();  // lower-left corner, in m
+  Vec2 max = Vec2::Zero();  // upper-right corner, in m
+
+  // Boxes that touch overlap: exactly touching bodies are in contact (separation 0).
+  bool overlaps(const Aabb& other) const {
+    return min.x() <= other.max.x() && other.min.x() <= max.x() && min.y() <= other.max.y() &&
+           other.min.y() <= max.y();
+  }
+};
+
+// The bounding box of a shape at a pose.
+Aabb bounding_box(const Shape& shape, const Pose2& pose);
+
+// Whether a world point lies inside the shape at a pose, or outside by at most `tolerance` (m).
+bool contains(const Shape& shape, const Pose2& pose, const Vec2& point, double tolerance);
+
+// Throws std::invalid_argument unless μ ≥ 0 and 0 ≤ e ≤ 1, both finite.
+void validate(const Material& material);
+
+}  // namespace lamina

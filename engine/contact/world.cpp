@@ -1,0 +1,213 @@
+#include "contact/world.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "constraints/mlcp.h"
+#include "motion/integrator.h"
+
+namespace lamina {
+namespace {
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw std::invalid_argument("world: " + message);
+}
+
+void require_at_least(double value, double low, const char* name) {
+  require(std::isfinite(value) && value >= low,
+          std::string(name) + " must be finite and ≥ " + std::to_string(low) + ", got " +
+              std::to_string(value));
+}
+
+void validate(const WorldSettings& s) {
+  require(s.gravity.allFinite() && s.gravity.z() == 0.0, "gravity must be finite and in the plane");
+  require(std::isfinite(s.dt) && s.dt > 0.0, "dt must be finite and > 0, got " + std::to_string(s.dt));
+  require(s.iterations >= 1, "iterations must be ≥ 1, got " + std::to_string(s.iterations));
+  require(s.position_iterations >= 1,
+          "position_iterations must be ≥ 1, got " + std::to_string(s.position_iterations));
+  require(std::isfinite(s.contact.beta) && s.contact.beta >= 0.0 && s.contact.beta <= 1.0,
+          "contact.beta must be in [0, 1], got " + std::to_string(s.contact.beta));
+  require_at_least(s.contact.slop, 0.0, "contact.slop");
+  require_at_least(s.contact.restitution_threshold, 0.0, "contact.restitution_threshold");
+  require_at_least(s.cache.keep_margin, 0.0, "cache.keep_margin");
+  require_at_least(s.cache.merge_distance, 0.0, "cache.merge_distance");
+  require_at_least(s.cache.drift_limit, 0.0, "cache.drift_limit");
+  require_at_least(s.cache.tie_tolerance, 0.0, "cache.tie_tolerance");
+}
+
+// A body in the x–y plane: centre at z = 0, turned about z only, moving in the plane.
+bool is_planar(const RigidBody& b) {
+  return b.x.z() == 0.0 && b.q.x() == 0.0 && b.q.y() == 0.0 && b.v.z() == 0.0 &&
+         b.angular_velocity.x() == 0.0 && b.angular_velocity.y() == 0.0;
+}
+
+}  // namespace
+
+World::World(const WorldSettings& settings) : settings_(settings) { validate(settings_); }
+
+int World::add_body(const RigidBody& body, const Shape& shape, const Material& material) {
+  require(is_planar(body), "body " + std::to_string(bodies_.size()) +
+                               " leaves the x–y plane (x_z, v_z, ω_x, ω_y and the tilt must be 0)");
+  // The factories check the sizes; a hand-made Shape is checked the same way.
+  const Shape checked = shape.is_box() ? Shape::box(shape.half_extents.x(), shape.half_extents.y())
+                                       : Shape::circle(shape.radius);
+  validate(material);
+  bodies_.push_back(body);
+  shapes_.push_back(checked);
+  materials_.push_back(material);
+  return static_cast<int>(bodies_.size()) - 1;
+}
+
+int World::add_box(double density, double half_x, double half_y, const Vec3& x, double angle,
+                   const Material& material) {
+  return add_body(box_body(density, half_x, half_y, x, angle), Shape::box(half_x, half_y), material);
+}
+
+int World::add_static_box(double half_x, double half_y, const Vec3& x, double angle,
+                          const Material& material) {
+  return add_body(RigidBody::static_body(x, planar_orientation(angle)), Shape::box(half_x, half_y),
+                  material);
+}
+
+int World::add_circle(double density, double radius, const Vec3& x, const Material& material) {
+  return add_body(disc_body(density, radius, x), Shape::circle(radius), material);
+}
+
+void World::add_joint(std::unique_ptr<Constraint> joint) { joints_.push_back(std::move(joint)); }
+
+void World::step() { advance(nullptr); }
+
+void World::step(WorldReport& report) { advance(&report); }
+
+void World::advance(WorldReport* report) {
+  if (report != nullptr) report->time = time_;
+  apply_forces();          // 1
+  detect_collisions();     // 2
+  update_cache();          // 3
+  build_rows();            // 4
+  solve(report);           // 5
+  add_constraint_forces(); // 6
+  integrate_bodies();      // 7
+  time_ += settings_.dt;
+}
+
+void World::apply_forces() {
+  // eq. 5-2: F_ext = m g (a static body has m = 0), on top of forces applied since the last step
+  apply_gravity(bodies_, settings_.gravity);
+}
+
+void World::detect_collisions() {
+  poses_.resize(bodies_.size());
+  boxes_.resize(bodies_.size());
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    poses_[i] = planar_pose(bodies_[i]);
+    boxes_[i] = bounding_box(shapes_[i], poses_[i]);
+  }
+  sort_and_sweep(boxes_, sweep_order_, candidate_pairs_);
+  fresh_.clear();
+  for (const BodyPair& pair : candidate_pairs_) {
+    if (bodies_[pair.first].is_static() && bodies_[pair.second].is_static()) continue;
+    // With the cache off there is nothing to break ties against: a first contact every step.
+    const CachedPoints cached =
+        settings_.cache.enabled ? cache_.cached_points(pair, poses_) : CachedPoints{};
+    const std::optional<Collision> collision =
+        collide(shapes_[pair.first], poses_[pair.first], shapes_[pair.second],
+                poses_[pair.second], cached, settings_.cache.tie_tolerance);
+    if (collision) fresh_.push_back({pair, *collision});
+  }
+}
+
+void World::update_cache() { cache_.update(fresh_, poses_, shapes_, materials_, settings_.cache); }
+
+void World::build_rows() {
+  rows_ = std::move(mlcp_.rows);  // reuse last step's row storage
+  rows_.clear();
+  warm_start_.clear();
+  kinds_.clear();
+  add_contact_rows(cache_.pairs(), bodies_, settings_.contact, settings_.dt, rows_, warm_start_,
+                   kinds_);
+  joint_rows_.clear();
+  for (const auto& joint : joints_) {
+    joint->write_rows(bodies_, settings_.dt, settings_.contact.beta, joint_rows_);
+  }
+  const Eigen::VectorXd joint_guess = joint_warm_start_.guess(joint_rows_);
+  rows_.insert(rows_.end(), joint_rows_.begin(), joint_rows_.end());
+  warm_start_.insert(warm_start_.end(), joint_guess.data(), joint_guess.data() + joint_guess.size());
+  kinds_.insert(kinds_.end(), joint_rows_.size(), RowKind::joint);
+}
+
+void World::solve(WorldReport* report) {
+  const double dt = settings_.dt;
+  // λ_exp: the cached λ of every contact (zero with the cache off), last step's for joints
+  const Eigen::VectorXd lambda_exp =
+      Eigen::Map<const Eigen::VectorXd>(warm_start_.data(), static_cast<Eigen::Index>(warm_start_.size()));
+  // eq. 3-16: J B λ = η with B = M⁻¹ Jᵀ, η = ζ/Δt − J (V/Δt + M⁻¹ F_ext)
+  mlcp_ = assemble_mlcp(bodies_, std::move(rows_), dt);
+  PgsSettings pgs;
+  pgs.iterations = settings_.iterations;
+  pgs.record_residuals = report != nullptr;
+  // eq. 3-24 by Projected Gauss-Seidel, friction bounds ±μ λc read as λc changes
+  solution_ = solve_pgs(mlcp_, lambda_exp, pgs);
+  store_contact_lambdas(cache_.pairs(), solution_.lambda, settings_.contact);
+  joint_warm_start_.remember(joint_rows_,
+                             solution_.lambda.tail(static_cast<Eigen::Index>(joint_rows_.size())));
+  if (report != nullptr) {
+    report->contacts = contact_infos(cache_.pairs());
+    report->kinds = kinds_;
+    report->velocity = StepReport{mlcp_, lambda_exp, solution_,
+                                  complementarity_slack(mlcp_, solution_.lambda)};
+    report->position = StepReport{};
+  }
+  solve_positions(report);
+}
+
+void World::solve_positions(WorldReport* report) {
+  push_out_.clear();
+  if (settings_.contact.correction != PositionCorrection::split_impulse) return;
+  const double dt = settings_.dt;
+  std::vector<ConstraintRow> rows;
+  add_position_rows(cache_.pairs(), bodies_, settings_.contact, dt, rows);
+  Mlcp mlcp = assemble_mlcp(bodies_, std::move(rows), dt);
+  // eq. 3-16 for the push-out alone: the bodies start from rest under no force, η = ζ/Δt
+  for (size_t i = 0; i < mlcp.rows.size(); ++i) mlcp.eta[i] = mlcp.rows[i].zeta / dt;
+  PgsSettings pgs;
+  pgs.iterations = settings_.position_iterations;
+  pgs.record_residuals = report != nullptr;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(mlcp.eta.size());
+  PgsResult solution = solve_pgs(mlcp, zero, pgs);
+  // The push-out velocity of each body: M⁻¹ Jᵀ λ Δt = B λ Δt
+  push_out_ = transpose_multiply(mlcp, solution.lambda);
+  for (Vec6& v : push_out_) v *= dt;
+  if (report != nullptr) {
+    report->position =
+        StepReport{mlcp, zero, solution, complementarity_slack(mlcp, solution.lambda)};
+  }
+}
+
+void World::add_constraint_forces() {
+  // eq. 3-11, 5-9: F_c = Jᵀ λ
+  apply_constraint_forces(bodies_, mlcp_.rows, solution_.lambda);
+}
+
+void World::integrate_bodies() {
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    RigidBody& body = bodies_[i];
+    if (body.is_static()) {
+      body.clear_forces();
+      continue;
+    }
+    // Split impulse: the push-out velocity moves the body in this step and is then taken back.
+    const Vec6 push = push_out_.empty() ? Vec6::Zero() : push_out_[i];
+    body.v += push.head<3>();
+    body.angular_velocity += push.tail<3>();
+    // eq. 2-1..2-8 under F_ext + F_c
+    integrate(body, settings_.dt);
+    body.v -= push.head<3>();
+    body.angular_velocity -= push.tail<3>();
+    body.clear_forces();
+  }
+}
+
+}  // namespace lamina

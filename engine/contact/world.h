@@ -1,0 +1,109 @@
+// The world of chapter 5: bodies with shapes, their contacts, joints, and the step that ties
+// chapter 2's motion, chapter 3's solver and chapter 4's contacts together.
+//
+//   World::step, t → t + Δt, in the order of the chapter-5 walk-through:
+//     1. forces      F_ext = m g + whatever was applied since the last step       (eq. 5-2)
+//     2. collision   broad phase (sort and sweep), then each pair's deepest point  (Fig 4-2)
+//     3. cache       cached points re-placed (eq. 5-12), fresh ones merged         (Fig 4-2..4-5)
+//     4. rows        contact rows (eq. 4-3, 5-8), each followed by its friction
+//                    row(s), then the joints' rows                                (eq. 5-11, 5-19)
+//     5. solve       J B λ = η by PGS, warm started from the cached λ            (eq. 3-16, 5-21)
+//     6. forces Jᵀλ  F_c = Jᵀ λ added to each body                                (eq. 3-11, 5-9)
+//     7. integrate   chapter 2's step under F_ext + F_c                          (eq. 2-1..2-8)
+//   λ is a force; the impulse over the step is λ Δt. With split impulse (the default, beyond
+//   the text) step 5 also solves for the push-out velocity, which step 7 lends to the bodies
+//   for the position update only.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "constraints/constrained_step.h"
+#include "constraints/constraint.h"
+#include "constraints/pgs_solver.h"
+#include "contact/contact_cache.h"
+#include "contact/contact_rows.h"
+#include "contact/world_report.h"
+
+namespace lamina {
+
+struct WorldSettings {
+  Vec3 gravity = Vec3(0.0, -9.8, 0.0);  // g, in m/s²; y is up (the text's chapter 5 has z up)
+  double dt = 1.0 / 60.0;               // Δt, in s
+  int iterations = 10;                  // PGS sweeps of the velocity MLCP
+  int position_iterations = 3;          // PGS sweeps of the split-impulse position MLCP (Box2D: 3)
+  ContactSettings contact;              // β (the joints' too), slop, restitution, correction
+  CacheSettings cache;                  // the contact cache on or off, and its margins
+};
+
+class World {
+ public:
+  // Throws std::invalid_argument naming the first setting out of range.
+  explicit World(const WorldSettings& settings = WorldSettings());
+
+  // Adds a body with its shape and material and returns its index. Throws
+  // std::invalid_argument if the body leaves the x–y plane (x_z, v_z, ω_x, ω_y ≠ 0 or a tilt
+  // out of the plane), or the shape or material is out of range.
+  int add_body(const RigidBody& body, const Shape& shape, const Material& material = Material());
+  // A dynamic box of the given density (kg/m², mass = density × area), half extents, centre, angle.
+  int add_box(double density, double half_x, double half_y, const Vec3& x, double angle = 0.0,
+              const Material& material = Material());
+  // A static box (the ground, a ramp): it never moves.
+  int add_static_box(double half_x, double half_y, const Vec3& x, double angle = 0.0,
+                     const Material& material = Material());
+  // A dynamic disc of the given density and radius.
+  int add_circle(double density, double radius, const Vec3& x,
+                 const Material& material = Material());
+  // Adds a joint (engine/constraints); its rows follow the contact rows every step.
+  void add_joint(std::unique_ptr<Constraint> joint);
+
+  // Advances the world by Δt. The second form also fills `report` with what was solved.
+  void step();
+  void step(WorldReport& report);
+
+  const WorldSettings& settings() const { return settings_; }
+  const std::vector<RigidBody>& bodies() const { return bodies_; }
+  // A body, to apply a force or set a velocity between steps.
+  RigidBody& body(int index) { return bodies_.at(index); }
+  const Shape& shape(int index) const { return shapes_.at(index); }
+  double time() const { return time_; }  // t, in s
+  // The contacts solved in the last step (point, normal, cached or fresh, λ), pair by pair.
+  const std::vector<ContactPair>& contact_pairs() const { return cache_.pairs(); }
+  std::vector<ContactInfo> contacts() const { return contact_infos(cache_.pairs()); }
+
+ private:
+  void advance(WorldReport* report);
+  void apply_forces();
+  void detect_collisions();
+  void update_cache();
+  void build_rows();
+  void solve(WorldReport* report);
+  void solve_positions(WorldReport* report);
+  void add_constraint_forces();
+  void integrate_bodies();
+
+  WorldSettings settings_;
+  double time_ = 0.0;                  // t, in s
+  std::vector<RigidBody> bodies_;      // the bodies, in the order they were added
+  std::vector<Shape> shapes_;          // bodies_[i]'s shape
+  std::vector<Material> materials_;    // bodies_[i]'s friction and restitution
+  ConstraintList joints_;              // the joints, their rows after the contacts'
+  ContactCache cache_;                 // the contacts kept from step to step
+  WarmStart joint_warm_start_;         // the joints' λ from the last step
+
+  // Working data of one step, kept so that steps reuse their memory.
+  std::vector<Pose2> poses_;                 // each body's planar pose at t
+  std::vector<Aabb> boxes_;                  // each body's bounding box at t
+  std::vector<int> sweep_order_;             // sort and sweep's scratch
+  std::vector<BodyPair> candidate_pairs_;    // the broad phase's pairs
+  std::vector<FreshCollision> fresh_;        // the narrow phase's deepest points
+  std::vector<ConstraintRow> rows_;          // the rows being built
+  std::vector<ConstraintRow> joint_rows_;    // the joints' rows being built
+  std::vector<double> warm_start_;           // λ_exp for rows_, in N
+  std::vector<RowKind> kinds_;               // what each of rows_ stands for
+  Mlcp mlcp_;                                // the velocity MLCP (eq. 3-16)
+  PgsResult solution_;                       // its λ
+  std::vector<Vec6> push_out_;               // split impulse: each body's [v; ω] push-out, m/s, rad/s
+};
+
+}  // namespace lamina
