@@ -1,5 +1,6 @@
 #include "contact/world.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -75,7 +76,17 @@ int World::add_circle(double density, double radius, const Vec3& x, const Materi
   return add_body(disc_body(density, radius, x), Shape::circle(radius), material);
 }
 
-void World::add_joint(std::unique_ptr<Constraint> joint) { joints_.push_back(std::move(joint)); }
+void World::add_joint(std::unique_ptr<Constraint> joint) {
+  std::vector<ConstraintRow> rows;
+  joint->write_rows(bodies_, settings_.dt, settings_.contact.beta, rows);
+  for (const ConstraintRow& row : rows) {
+    if (row.is_one_body()) continue;
+    const BodyPair pair{std::min(row.Jmap[0], row.Jmap[1]), std::max(row.Jmap[0], row.Jmap[1])};
+    const auto at = std::lower_bound(jointed_.begin(), jointed_.end(), pair);
+    if (at == jointed_.end() || !(*at == pair)) jointed_.insert(at, pair);
+  }
+  joints_.push_back(std::move(joint));
+}
 
 void World::step() { advance(nullptr); }
 
@@ -109,6 +120,7 @@ void World::detect_collisions() {
   fresh_.clear();
   for (const BodyPair& pair : candidate_pairs_) {
     if (bodies_[pair.first].is_static() && bodies_[pair.second].is_static()) continue;
+    if (std::binary_search(jointed_.begin(), jointed_.end(), pair)) continue;
     // With the cache off there is nothing to break ties against: a first contact every step.
     const CachedPoints cached =
         settings_.cache.enabled ? cache_.cached_points(pair, poses_) : CachedPoints{};

@@ -54,7 +54,8 @@ class World {
   // A dynamic disc of the given density and radius.
   int add_circle(double density, double radius, const Vec3& x,
                  const Material& material = Material());
-  // Adds a joint (engine/constraints); its rows follow the contact rows every step.
+  // Adds a joint (engine/constraints); its rows follow the contact rows every step. Two bodies
+  // joined by a joint do not collide with each other (Box2D's default, collideConnected false).
   void add_joint(std::unique_ptr<Constraint> joint);
 
   // Advances the world by Δt. The second form also fills `report` with what was solved.
@@ -88,6 +89,7 @@ class World {
   std::vector<Shape> shapes_;          // bodies_[i]'s shape
   std::vector<Material> materials_;    // bodies_[i]'s friction and restitution
   ConstraintList joints_;              // the joints, their rows after the contacts'
+  std::vector<BodyPair> jointed_;      // pairs of bodies joined by a joint, sorted: never collide
   ContactCache cache_;                 // the contacts kept from step to step
   WarmStart joint_warm_start_;         // the joints' λ from the last step
 

@@ -1,0 +1,67 @@
+#include "scene/scene_world.h"
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "constraints/distance_constraint.h"
+#include "constraints/revolute_joint.h"
+
+namespace lamina {
+namespace {
+
+Vec3 planar(const Vec2d& v) { return Vec3(v[0], v[1], 0.0); }
+
+int add_body(World& world, const BodyDescription& desc) {
+  const Material material{desc.friction, desc.restitution};
+  const Vec3 x = planar(desc.position);
+  const ShapeDescription& s = desc.shape;
+  const Shape shape = s.type == ShapeType::box ? Shape::box(s.half_extents[0], s.half_extents[1])
+                                               : Shape::circle(s.radius);
+  if (desc.is_static) {
+    return world.add_body(RigidBody::static_body(x, planar_orientation(desc.angle)), shape, material);
+  }
+  const int index =
+      s.type == ShapeType::box
+          ? world.add_box(desc.density, s.half_extents[0], s.half_extents[1], x, desc.angle, material)
+          : world.add_body(disc_body(desc.density, s.radius, x, desc.angle), shape, material);
+  RigidBody& body = world.body(index);
+  body.v = planar(desc.velocity);
+  body.angular_velocity = Vec3(0.0, 0.0, desc.angular_velocity);
+  return index;
+}
+
+std::unique_ptr<Constraint> make_joint(const World& world, const JointDescription& desc, int a, int b) {
+  const std::vector<RigidBody>& bodies = world.bodies();
+  if (desc.type == JointType::revolute) {
+    const Vec3 pin = planar(desc.anchor);
+    return std::make_unique<RevoluteJoint>(anchor_at(bodies, a, pin), anchor_at(bodies, b, pin));
+  }
+  const Vec3 end_a = planar(desc.anchors[0]);
+  const Vec3 end_b = planar(desc.anchors[1]);
+  return std::make_unique<DistanceConstraint>(anchor_at(bodies, a, end_a), anchor_at(bodies, b, end_b),
+                                              (end_b - end_a).norm());
+}
+
+}  // namespace
+
+WorldSettings world_settings(const Scene& scene) {
+  WorldSettings settings;
+  settings.gravity = planar(scene.gravity);
+  settings.dt = scene.dt;
+  settings.iterations = scene.iterations;
+  settings.contact.beta = scene.beta;
+  return settings;
+}
+
+World build_world(const Scene& scene, const WorldSettings& settings) {
+  World world(settings);
+  std::map<std::string, int> index_of;
+  for (const BodyDescription& desc : scene.bodies) index_of[desc.name] = add_body(world, desc);
+  for (const JointDescription& joint : scene.joints) {
+    world.add_joint(make_joint(world, joint, index_of.at(joint.bodies[0]), index_of.at(joint.bodies[1])));
+  }
+  return world;
+}
+
+}  // namespace lamina

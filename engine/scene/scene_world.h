@@ -1,0 +1,17 @@
+// A World made from a Scene: the bridge from scene files to the chapter-5 engine.
+#pragma once
+
+#include "contact/world.h"
+#include "scene/scene.h"
+
+namespace lamina {
+
+// The world settings a scene asks for (gravity, Δt, iterations, β); the rest are the defaults.
+WorldSettings world_settings(const Scene& scene);
+
+// The scene's bodies, in order (World body i is scene.bodies[i]), with their shapes, materials,
+// initial velocities and joints. Joined bodies do not collide. Throws std::invalid_argument for
+// a value the engine refuses.
+World build_world(const Scene& scene, const WorldSettings& settings);
+
+}  // namespace lamina
