@@ -84,7 +84,11 @@ Quat planar_orientation(double angle) {
   return quaternion_from_axis_angle(Vec3::UnitZ(), angle);
 }
 
-double planar_angle(const Quat& q) { return 2.0 * std::atan2(q.z(), q.w()); }
+double planar_angle(const Quat& q) {
+  // From q = cos(θ/2) + z sin(θ/2): sin θ = 2 w z and cos θ = w² − z². Unlike 2 atan2(z, w),
+  // this stays in (−π, π] once q has turned past π (w < 0), and q and −q give the same angle.
+  return std::atan2(2.0 * q.w() * q.z(), q.w() * q.w() - q.z() * q.z());
+}
 
 RigidBody box_body(double density, double half_x, double half_y, const Vec3& x, double angle) {
   require(std::isfinite(half_x) && std::isfinite(half_y) && half_x > 0.0 && half_y > 0.0,
