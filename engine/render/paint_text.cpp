@@ -1,0 +1,100 @@
+// Caption, status line and the corner panels of numbers.
+#include <algorithm>
+
+#include "render/paint.h"
+
+namespace lamina::render {
+namespace {
+
+// Height of one line of the face at its size, in pixels.
+double line_height(Canvas& c, Typeface face, int px) { return c.text.metrics(face, px).height; }
+
+// The caption at the top left, shrunk when it would run into the status line at the top right.
+// The status gets at least 30 % of the width, so a growing step count does not change the
+// caption's size from one frame of a sequence to the next.
+void paint_top_bar(const Frame& frame, Canvas& c) {
+  const double middle = c.style.margin + 0.65 * c.style.caption_px;
+  const double status =
+      std::max(c.text.width(frame.status, Typeface::sans, c.style.text_px), 0.3 * c.size.width);
+  const double room = c.size.width - 4.0 * c.style.margin - status;
+  const double natural = c.text.width(frame.caption, Typeface::bold, c.style.caption_px);
+  const int px = natural <= room
+                     ? c.style.caption_px
+                     : std::max(8, static_cast<int>(c.style.caption_px * room / natural));
+  c.write(frame.caption, {Typeface::bold, px, palette::ink}, Vec2(c.style.margin, middle));
+  c.write(frame.status, {Typeface::sans, c.style.text_px, palette::grey},
+          Vec2(c.size.width - c.style.margin, middle), 1.0);
+  const double rule = c.style.top_bar() - 0.5 * c.style.margin;
+  stroke_segment(c.mesh, Vec2(c.style.margin, rule), Vec2(c.size.width - c.style.margin, rule),
+                 c.style.unit, palette::grid);
+}
+
+Vec2 panel_size(Canvas& c, const Panel& panel) {
+  double width = c.text.width(panel.title, Typeface::bold, c.style.text_px);
+  for (const std::string& line : panel.lines) {
+    width = std::max(width, c.text.width(line, Typeface::mono, c.style.mono_px));
+  }
+  const double title = panel.title.empty() ? 0.0 : line_height(c, Typeface::bold, c.style.text_px);
+  const double rows = panel.lines.size() * line_height(c, Typeface::mono, c.style.mono_px);
+  return Vec2(width, title + rows) + Vec2::Constant(2.0 * panel_padding(c.style));
+}
+
+void paint_panel(Canvas& c, const Panel& panel) {
+  const Vec2 size = panel_size(c, panel);
+  const Vec2 corner = corner_position(c, panel.corner, size);
+  draw_text_box(c, {corner, corner + size});
+  const double pad = panel_padding(c.style);
+  double y = corner.y() + pad;
+  if (!panel.title.empty()) {
+    const double h = line_height(c, Typeface::bold, c.style.text_px);
+    c.write(panel.title, {Typeface::bold, c.style.text_px, panel.title_colour},
+            Vec2(corner.x() + pad, y + 0.5 * h));
+    y += h;
+  }
+  const double h = line_height(c, Typeface::mono, c.style.mono_px);
+  for (const std::string& line : panel.lines) {
+    c.write(line, {Typeface::mono, c.style.mono_px, palette::ink},
+            Vec2(corner.x() + pad, y + 0.5 * h));
+    y += h;
+  }
+}
+
+}  // namespace
+
+void Canvas::write(std::string_view line, const TextStyle& style, const Vec2& anchor,
+                   double align_x) const {
+  const LineMetrics m = text.metrics(style.face, style.px);
+  const double left = anchor.x() - align_x * text.width(line, style.face, style.px);
+  text.draw(mesh, line, style, Vec2(left, anchor.y() + 0.5 * (m.ascender - m.descender)));
+}
+
+double panel_padding(const Style& style) { return 0.6 * style.margin; }
+
+Vec2 corner_position(const Canvas& c, Corner corner, const Vec2& size) {
+  const Rect area = c.style.drawing_area(c.size, c.overlays.has(Overlay::axes));
+  switch (corner) {
+    case Corner::top_right:
+      return {area.max.x() - size.x(), area.min.y()};
+    case Corner::bottom_left:
+      return {area.min.x(), area.max.y() - size.y()};
+    case Corner::bottom_right:
+      return area.max - size;
+    case Corner::top_left:
+      break;
+  }
+  return area.min;
+}
+
+void draw_text_box(const Canvas& c, const Rect& box) {
+  const std::vector<Vec2> corners{box.min, Vec2(box.max.x(), box.min.y()), box.max,
+                                  Vec2(box.min.x(), box.max.y())};
+  fill_convex(c.mesh, corners, with_alpha(palette::white, 230));
+  stroke_convex(c.mesh, corners, c.style.unit, palette::grid);
+}
+
+void paint_text(const Frame& frame, Canvas& canvas) {
+  paint_top_bar(frame, canvas);
+  for (const Panel& p : frame.panels) paint_panel(canvas, p);
+}
+
+}  // namespace lamina::render

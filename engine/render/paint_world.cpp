@@ -1,0 +1,98 @@
+// Ground, paths, bodies, joints, arrows and labels: the scene itself.
+#include <cmath>
+
+#include "render/paint.h"
+
+namespace lamina::render {
+namespace {
+
+// Unit vector at angle θ (world, y up).
+Vec2 direction(double angle) { return {std::cos(angle), std::sin(angle)}; }
+// A world direction as a pixel direction (y flips).
+Vec2 screen(const Vec2& world_direction) { return {world_direction.x(), -world_direction.y()}; }
+
+std::vector<Vec2> box_corners(const Canvas& c, const Body& body) {
+  const Vec2 ex = direction(body.angle) * body.half_extents.x();
+  const Vec2 ey = direction(body.angle + M_PI / 2) * body.half_extents.y();
+  return {c.px(body.centre + ex + ey), c.px(body.centre - ex + ey), c.px(body.centre - ex - ey),
+          c.px(body.centre + ex - ey)};
+}
+
+// The outline, filled, with a radius line from the centre that turns with the body.
+void paint_body(Canvas& c, const Body& body) {
+  const Vec2 centre = c.px(body.centre);
+  const bool box = body.shape == Body::Shape::box;
+  const double reach = box ? body.half_extents.x() : body.radius;
+  const std::vector<Vec2> outline =
+      box ? box_corners(c, body) : circle_points(centre, body.radius * c.camera.pixels_per_metre());
+  fill_convex(c.mesh, outline, body.fill);
+  stroke_convex(c.mesh, outline, c.style.outline, palette::ink);
+  const Vec2 mark = c.px(body.centre + reach * direction(body.angle));
+  stroke_segment(c.mesh, centre, mark, c.style.line, palette::ink);
+}
+
+// A band below the surface line, hatched at 45°, as engineering drawings show fixed ground.
+void paint_ground(Canvas& c, const Ground& ground) {
+  const Vec2 normal = ground.normal.normalized();
+  const Vec2 n = screen(normal), t(-n.y(), n.x());
+  // The surface point nearest the middle of the frame; the line runs a frame diagonal each way.
+  const Vec2 view_centre = c.camera.to_world(Vec2(c.size.width, c.size.height) / 2.0);
+  const Vec2 foot = c.px(view_centre - (view_centre - ground.point).dot(normal) * normal);
+  const double half = std::hypot(c.size.width, c.size.height);
+  const double depth = 16.0 * c.style.unit, spacing = 14.0 * c.style.unit;
+  const Vec2 a = foot - half * t, b = foot + half * t;
+  fill_convex(c.mesh, {a, b, b - depth * n, a - depth * n}, tint(palette::grey, 0.18));
+  for (double s = -half; s < half; s += spacing) {
+    const Vec2 top = foot + s * t;
+    stroke_segment(c.mesh, top, top - depth * n + depth * t, c.style.unit, palette::grey);
+  }
+  stroke_segment(c.mesh, a, b, c.style.outline * 1.25, palette::ink);
+}
+
+void paint_pin(Canvas& c, const Vec2& at) {
+  fill_ringed_disc(c.mesh, at, c.style.marker, palette::white, c.style.outline, palette::ink);
+  fill_disc(c.mesh, at, 0.3 * c.style.marker, palette::ink);
+}
+
+void paint_joint(Canvas& c, const Joint& joint) {
+  stroke_segment(c.mesh, c.px(joint.a), c.px(joint.b), c.style.outline, palette::ink);
+  paint_pin(c, c.px(joint.a));
+  paint_pin(c, c.px(joint.b));
+}
+
+void paint_arrow(Canvas& c, const Arrow& arrow) {
+  if (arrow.layer && !c.overlays.has(*arrow.layer)) return;
+  const Vec2 from = c.px(arrow.from), to = c.px(arrow.to);
+  draw_arrow(c.mesh, from, to, c.style.arrow, arrow.colour);
+  if (arrow.label.empty()) return;
+  const Vec2 d = (to - from).norm() > 0.0 ? Vec2((to - from).normalized()) : Vec2::UnitX();
+  const TextStyle style{Typeface::sans, c.style.text_px, arrow.colour};
+  c.write(arrow.label, style, to + d * (0.6 * c.style.text_px), d.x() < -0.3 ? 1.0 : 0.0);
+}
+
+void paint_label(Canvas& c, const Label& label) {
+  const double align = label.align == Label::Align::left     ? 0.0
+                       : label.align == Label::Align::centre ? 0.5
+                                                             : 1.0;
+  c.write(label.text, {Typeface::sans, c.style.text_px, label.colour}, c.px(label.at), align);
+}
+
+void paint_path(Canvas& c, const Path& path) {
+  std::vector<Vec2> points;
+  for (const Vec2& p : path.points) points.push_back(c.px(p));
+  stroke_polyline(c.mesh, points, c.style.line, path.colour,
+                  path.dashed ? 9.0 * c.style.unit : 0.0);
+}
+
+}  // namespace
+
+void paint_world(const Frame& frame, Canvas& canvas) {
+  for (const Ground& g : frame.grounds) paint_ground(canvas, g);
+  for (const Path& p : frame.paths) paint_path(canvas, p);
+  for (const Body& b : frame.bodies) paint_body(canvas, b);
+  for (const Joint& j : frame.joints) paint_joint(canvas, j);
+  for (const Arrow& a : frame.arrows) paint_arrow(canvas, a);
+  for (const Label& l : frame.labels) paint_label(canvas, l);
+}
+
+}  // namespace lamina::render
