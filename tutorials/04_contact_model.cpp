@@ -273,7 +273,8 @@ class CacheOnVsOff : public tutorial::Scene {
                                   {{"cache on", render::palette::blue, false},
                                    {"cache off", render::palette::vermillion, false},
                                    {"slop (left uncorrected)", render::palette::grey, true}},
-                                  rows});
+                                  rows,
+                                  "top right"});
   }
 
  private:

@@ -57,7 +57,8 @@ std::string gnuplot_script(const Plot& plot, const fs::path& csv, const fs::path
   s << "set terminal pngcairo size 1280,720 noenhanced font 'DejaVu Sans,16'\n"
     << "set output " << literal(png.string()) << "\n"
     << "set datafile separator ','\n"
-    << "set key top left opaque box\n"
+    << "set key " << plot.legend << " opaque box\n"
+    << (plot.log_y ? "set logscale y\nset format y '%.0e'\n" : "")
     << "set grid lc rgb '#E2E2DE'\n"
     << "set title " << literal(plot.title) << "\n"
     << "set xlabel " << literal(plot.x_label) << "\n"

@@ -25,6 +25,8 @@ struct Plot {
   std::string y_label;
   std::vector<Series> series;             // the other columns
   std::vector<std::vector<double>> rows;  // x, then one value per series
+  std::string legend = "top left";        // gnuplot's key position, e.g. "top right"
+  bool log_y = false;                     // a logarithmic y axis (residuals, errors)
 };
 
 // Writes folder/<name>.csv, then folder/<name>.png with gnuplot when it is on PATH.
