@@ -18,7 +18,8 @@ std::vector<Vec2> box_corners(const Canvas& c, const Body& body) {
           c.px(body.centre + ex - ey)};
 }
 
-// The outline, filled, with a radius line from the centre that turns with the body.
+// The outline, filled, with a radius line from the centre that turns with the body (a fixed
+// body never turns, so it has none).
 void paint_body(Canvas& c, const Body& body) {
   const Vec2 centre = c.px(body.centre);
   const bool box = body.shape == Body::Shape::box;
@@ -27,6 +28,7 @@ void paint_body(Canvas& c, const Body& body) {
       box ? box_corners(c, body) : circle_points(centre, body.radius * c.camera.pixels_per_metre());
   fill_convex(c.mesh, outline, body.fill);
   stroke_convex(c.mesh, outline, c.style.outline, palette::ink);
+  if (body.fixed) return;
   const Vec2 mark = c.px(body.centre + reach * direction(body.angle));
   stroke_segment(c.mesh, centre, mark, c.style.line, palette::ink);
 }
