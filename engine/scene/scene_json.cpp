@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/json_layout.h"
+
 namespace lamina {
 namespace {
 
@@ -233,15 +235,18 @@ Scene read_scene(const Reader& r, const json& j) {
   return scene;
 }
 
-json vec2_json(const Vec2d& v) { return json::array({v[0], v[1]}); }
+// Scene files are written with their keys in a fixed order (name first), laid out to be edited.
+using ordered_json = nlohmann::ordered_json;
 
-json shape_json(const ShapeDescription& shape) {
+ordered_json vec2_json(const Vec2d& v) { return ordered_json::array({v[0], v[1]}); }
+
+ordered_json shape_json(const ShapeDescription& shape) {
   if (shape.type == ShapeType::circle) return {{"type", "circle"}, {"radius", shape.radius}};
   return {{"type", "box"}, {"half_extents", vec2_json(shape.half_extents)}};
 }
 
-json body_json(const BodyDescription& b) {
-  json j = {{"name", b.name}, {"shape", shape_json(b.shape)}, {"position", vec2_json(b.position)},
+ordered_json body_json(const BodyDescription& b) {
+  ordered_json j = {{"name", b.name}, {"shape", shape_json(b.shape)}, {"position", vec2_json(b.position)},
             {"angle", b.angle}, {"static", b.is_static}, {"friction", b.friction},
             {"restitution", b.restitution}};
   if (!b.is_static) {
@@ -252,13 +257,13 @@ json body_json(const BodyDescription& b) {
   return j;
 }
 
-json joint_json(const JointDescription& joint) {
-  json j = {{"bodies", {joint.bodies[0], joint.bodies[1]}}};
-  if (joint.type == JointType::revolute) {
-    j["type"] = "revolute";
+ordered_json joint_json(const JointDescription& joint) {
+  const bool revolute = joint.type == JointType::revolute;
+  ordered_json j = {{"type", revolute ? "revolute" : "distance"},
+                    {"bodies", {joint.bodies[0], joint.bodies[1]}}};
+  if (revolute) {
     j["anchor"] = vec2_json(joint.anchor);
   } else {
-    j["type"] = "distance";
     j["anchors"] = {vec2_json(joint.anchors[0]), vec2_json(joint.anchors[1])};
   }
   return j;
@@ -287,13 +292,13 @@ Scene read_scene_file(const std::string& path) {
 }
 
 std::string scene_to_json(const Scene& scene) {
-  json j = {{"name", scene.name}, {"description", scene.description},
-            {"gravity", vec2_json(scene.gravity)}, {"dt", scene.dt},
-            {"iterations", scene.iterations}, {"beta", scene.beta}, {"steps", scene.steps},
-            {"bodies", json::array()}, {"joints", json::array()}};
+  ordered_json j = {{"name", scene.name}, {"description", scene.description},
+                    {"gravity", vec2_json(scene.gravity)}, {"dt", scene.dt},
+                    {"iterations", scene.iterations}, {"beta", scene.beta}, {"steps", scene.steps},
+                    {"bodies", ordered_json::array()}, {"joints", ordered_json::array()}};
   for (const BodyDescription& body : scene.bodies) j["bodies"].push_back(body_json(body));
   for (const JointDescription& joint : scene.joints) j["joints"].push_back(joint_json(joint));
-  return j.dump(2) + "\n";
+  return layout_json(j) + "\n";
 }
 
 }  // namespace lamina

@@ -1,0 +1,36 @@
+// Writing a trace as the run goes: JSON Lines (trace_json.h), or CSV (trace_csv.h) when the
+// path ends in ".csv": bodies in FILE.csv, contacts in FILE.contacts.csv. Nothing appears at
+// the paths until finish(); a run that stops early leaves no trace file (output_file.h).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "scene/output_file.h"
+#include "scene/trace.h"
+
+namespace lamina {
+
+class TraceWriter {
+ public:
+  // Opens the trace's temporary file(s). Throws OutputFileError when a path cannot be written.
+  explicit TraceWriter(const std::filesystem::path& path);
+
+  // Appends one step. Throws OutputFileError when the disk refuses it.
+  void write(const TraceStep& step);
+  // Puts the complete file(s) in place. Throws OutputFileError on failure.
+  void finish();
+
+  // The file(s) the trace goes to: the path, and for CSV the contacts file after it.
+  std::vector<std::filesystem::path> paths() const;
+
+ private:
+  bool csv_;                                   // CSV (two files) rather than JSON Lines (one)
+  std::vector<std::unique_ptr<OutputFile>> files_;  // JSON Lines; or CSV bodies, CSV contacts
+};
+
+// The contacts file of a CSV trace: "run.csv" → "run.contacts.csv".
+std::filesystem::path contacts_csv_path(const std::filesystem::path& path);
+
+}  // namespace lamina

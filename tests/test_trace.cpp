@@ -1,0 +1,184 @@
+// Traces: a trace read back gives the run's state exactly, runs write the same bytes, the
+// contact impulses are λ Δt, and a trace is complete or absent.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+
+#include <unistd.h>
+
+#include "scene/builtin_scenes.h"
+#include "scene/scene_world.h"
+#include "scene/shortest_number.h"
+#include "scene/trace_csv.h"
+#include "scene/trace_json.h"
+#include "scene/trace_writer.h"
+
+using namespace lamina;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A test case's own empty folder under the system's temporary folder, removed afterwards.
+struct TraceFolder {
+  const fs::path folder = fs::temp_directory_path() / ("lamina-test-trace-" + std::to_string(getpid()));
+  TraceFolder() {
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+  }
+  ~TraceFolder() { fs::remove_all(folder); }
+};
+
+std::string contents(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string last_line(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line, last;
+  while (std::getline(in, line)) last = line;
+  return last;
+}
+
+// Runs a built-in scene `steps` steps, writing its trace to `path`; returns the world.
+World run_with_trace(const Scene& scene, int steps, const fs::path& path) {
+  World world = build_world(scene, world_settings(scene));
+  TraceWriter trace(path);
+  for (long step = 1; step <= steps; ++step) {
+    world.step();
+    trace.write(trace_step(scene, world, step));
+  }
+  trace.finish();
+  return world;
+}
+
+}  // namespace
+
+TEST_SUITE("Trace") {
+  TEST_CASE_FIXTURE(TraceFolder, "the last line of a trace reads back to the world's final state exactly") {
+    for (const char* name : {"box-on-ground-tilted", "pendulum", "see-saw"}) {
+      CAPTURE(name);
+      const Scene scene = builtin_scene(name);
+      const fs::path path = folder / (std::string(name) + ".jsonl");
+      const World world = run_with_trace(scene, 90, path);
+      const TraceStep last = parse_trace_line(last_line(path));
+      CHECK(last.step == 90);
+      CHECK(last.time == world.time());
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        if (scene.bodies[i].is_static) continue;
+        REQUIRE(k < last.bodies.size());
+        const BodyState& b = last.bodies[k++];
+        const RigidBody& body = world.bodies()[i];
+        CAPTURE(b.name);
+        // Exact: the shortest round-trip form reads back to the same double (no tolerance).
+        CHECK(b.name == scene.bodies[i].name);
+        CHECK(b.position == Vec2d{body.x.x(), body.x.y()});
+        CHECK(b.angle == planar_angle(body.q));
+        CHECK(b.velocity == Vec2d{body.v.x(), body.v.y()});
+        CHECK(b.angular_velocity == body.angular_velocity.z());
+      }
+      CHECK(k == last.bodies.size());
+    }
+  }
+
+  TEST_CASE_FIXTURE(TraceFolder, "two runs of a scene write the same bytes") {
+    const Scene scene = pyramid_scene(6);
+    run_with_trace(scene, 60, folder / "first.jsonl");
+    run_with_trace(scene, 60, folder / "second.jsonl");
+    const std::string first = contents(folder / "first.jsonl");
+    CHECK(first.size() > 0);
+    CHECK(first == contents(folder / "second.jsonl"));
+  }
+
+  TEST_CASE("a resting box's contact impulses add up to m g Δt, normal from ground to box") {
+    const Scene scene = builtin_scene("box-on-ground-resting");
+    World world = build_world(scene, world_settings(scene));
+    for (int step = 0; step < 120; ++step) world.step();
+    const TraceStep record = trace_step(scene, world, 120);
+    REQUIRE(record.contacts.size() == 2);
+    double impulse = 0.0;
+    for (const ContactState& c : record.contacts) {
+      CHECK(c.bodies == std::array<std::string, 2>{"ground", "box"});
+      CHECK(c.normal == Vec2d{0.0, 1.0});
+      impulse += c.normal_impulse;
+    }
+    // m = 1 kg (density 1 kg/m², 1 m²): at rest the contacts carry its weight. The tolerance
+    // is the PGS residual after 10 sweeps, warm started from a resting cache.
+    const double m_g_dt = 1.0 * 9.8 * scene.dt;
+    CHECK(impulse == doctest::Approx(m_g_dt).epsilon(1e-6));
+  }
+
+  TEST_CASE("a trace line has the documented keys, in order, numbers in shortest form") {
+    TraceStep step{1, 1.0 / 60.0, {{"box", {0.0, 0.1 + 0.2}, 0.3, {0.0, -0.16}, 0.0}}, {}};
+    step.contacts.push_back({{"ground", "box"}, {0.1, 0.0}, {0.0, 1.0}, 0.001, 0.08, 0.0, true});
+    CHECK(trace_json_line(step) ==
+          R"({"step":1,"time":0.016666666666666666,"bodies":[{"name":"box",)"
+          R"("position":[0.0,0.30000000000000004],"angle":0.3,"velocity":[0.0,-0.16],)"
+          R"("angular_velocity":0.0}],"contacts":[{"bodies":["ground","box"],"point":[0.1,0.0],)"
+          R"("normal":[0.0,1.0],"depth":0.001,"normal_impulse":0.08,"tangent_impulse":0.0,)"
+          R"("cached":true}]})");
+  }
+
+  TEST_CASE_FIXTURE(TraceFolder, "a CSV trace has one row per dynamic body per step and its contacts beside it") {
+    const Scene scene = builtin_scene("vertical-stack");
+    run_with_trace(scene, 10, folder / "stack.csv");
+    const std::string bodies = contents(folder / "stack.csv");
+    CHECK(bodies.rfind(trace_csv_body_header(), 0) == 0);
+    CHECK(std::count(bodies.begin(), bodies.end(), '\n') == 1 + 10 * 5);  // five boxes
+    CHECK(last_line(folder / "stack.csv").rfind("10,0.16666666666666666,box4,", 0) == 0);
+    const std::string contacts = contents(folder / "stack.contacts.csv");
+    CHECK(contacts.rfind(trace_csv_contact_header(), 0) == 0);
+    CHECK(contacts.find("\n10,0.16666666666666666,ground,box0,") != std::string::npos);
+  }
+
+  TEST_CASE("every number reads back to the same double, and whole numbers read as floating point") {
+    for (double x : {2.0, -0.0, 0.1 + 0.2, 1.0 / 3.0, 1e-300, 5e-324, 1e21, -1.5e-7, 0.0001}) {
+      std::string text;
+      append_shortest(text, x);
+      CAPTURE(text);
+      const double back = std::strtod(text.c_str(), nullptr);
+      CHECK(back == x);  // exact: no tolerance
+      CHECK(std::signbit(back) == std::signbit(x));
+      CHECK(text.find_first_of(".e") != std::string::npos);
+    }
+  }
+
+  TEST_CASE("a CSV field holding a comma or a quote is quoted") {
+    const TraceStep step{3, 0.5, {{"a,\"b\"", {1.0, 2.0}, 0.0, {0.0, 0.0}, 0.0}}, {}};
+    CHECK(trace_csv_body_rows(step) == "3,0.5,\"a,\"\"b\"\"\",1.0,2.0,0.0,0.0,0.0,0.0\n");
+  }
+
+  TEST_CASE_FIXTURE(TraceFolder, "a trace not finished leaves no file, not even its temporary") {
+    {
+      TraceWriter trace(folder / "run.csv");
+      trace.write(TraceStep{1, 0.1, {}, {}});
+    }
+    CHECK(fs::is_empty(folder));
+  }
+
+  TEST_CASE_FIXTURE(TraceFolder, "a trace path that cannot be written is refused with one line naming it") {
+    std::ofstream(folder / "file") << "x";
+    for (const fs::path& path : {folder / "file" / "run.jsonl", folder}) {
+      CAPTURE(path);
+      std::string message;
+      try {
+        TraceWriter trace(path);
+      } catch (const OutputFileError& e) {
+        message = e.what();
+      }
+      CHECK(message.find(path.string()) != std::string::npos);
+      CHECK(message.find('\n') == std::string::npos);
+    }
+    CHECK(std::distance(fs::directory_iterator(folder), {}) == 1);  // only "file"
+  }
+}

@@ -1,0 +1,126 @@
+#include "lamina/command_line.h"
+
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "harness/options.h"
+#include "lamina/exit_codes.h"
+
+namespace lamina::cli {
+namespace {
+
+constexpr long most_steps = 10000000;  // as a scene file's `steps` (docs/scene-format.md)
+
+const char* const exit_codes =
+    "Exit codes: 0 ok; 2 bad input (a scene file, option value or output path: one line on "
+    "standard error names it, and nothing is written); 1 internal failure (a bug, or no OpenGL "
+    "for --frames).\nDocumentation: docs/lamina-command.md, docs/scene-format.md.";
+
+const char* const scene_help =
+    "a scene file (JSON, see docs/scene-format.md), or the name of a built-in scene "
+    "(`lamina scenes`; pyramid:N has N boxes in its base)";
+
+// The options of `run` whose values are kept as text until parsing is done.
+struct RunText {
+  std::string size = "1280x720";
+  std::string overlays = "contacts";
+  std::string explain_format = "text";
+};
+
+// Adds an option whose value goes into an std::optional when it is given.
+template <typename T>
+CLI::Option* add_optional(CLI::App& app, const std::string& name, std::optional<T>& target,
+                          const std::string& help) {
+  return app.add_option_function<T>(name, [&target](const T& value) { target = value; }, help);
+}
+
+void add_run_options(CLI::App& run, RunOptions& o, RunText& text) {
+  run.add_option("SCENE", o.scene, scene_help)->required();
+  add_optional(run, "--steps", o.steps, "time steps to take (default: the scene's `steps`)")
+      ->type_name("N")->check(CLI::Range(0L, most_steps));
+  add_optional(run, "--dt", o.dt, "the time step Δt in s (default: the scene's `dt`)")
+      ->type_name("S")->check(CLI::Range(1e-5, 1.0));
+  add_optional(run, "--iterations", o.iterations, "PGS sweeps per step (default: the scene's)")
+      ->type_name("K")->check(CLI::Range(0, 10000));
+  add_optional(run, "--beta", o.beta, "β of the position bias, eq. 3-14 and 4-4 (default: the scene's)")
+      ->type_name("B")->check(CLI::Range(0.0, 1.0));
+  run.add_flag("--no-cache", o.no_cache, "solve without the contact cache (no warm start, Fig 4-2..4-5)");
+  auto* trace = add_optional(run, "--trace", o.trace,
+                             "write every step to FILE: JSON Lines, or CSV when FILE ends in .csv "
+                             "(contacts then go to FILE.contacts.csv)")->type_name("FILE");
+  auto* frames = add_optional(run, "--frames", o.frames,
+                              "render PNG frames into DIR: <scene>_0000.png at step 0, then one "
+                              "every --every steps")->type_name("DIR");
+  run.add_option("--every", o.every, "steps between frames")->type_name("K")->capture_default_str()
+      ->check(CLI::PositiveNumber)->needs(frames);
+  run.add_option("--size", text.size, "frame size in pixels, each side 16..8192")
+      ->type_name("WxH")->capture_default_str()->needs(frames);
+  run.add_option("--overlay", text.overlays, "layers on the frames: contacts, normals, forces, "
+                 "velocities, centres, axes (comma-separated), all or none")
+      ->type_name("LIST")->capture_default_str()->needs(frames);
+  auto* explain = add_optional(run, "--explain", o.explain, "print what the engine computed at "
+                               "step STEP, with equation numbers, and stop; writes no file")
+                      ->type_name("STEP")->check(CLI::Range(0L, most_steps))
+                      ->excludes(trace)->excludes(frames);
+  run.add_option("--explain-format", text.explain_format, "text or json")
+      ->type_name("FORMAT")->capture_default_str()->check(CLI::IsMember({"text", "json"}))->needs(explain);
+}
+
+// The values CLI11 left as text, converted; throws InputError naming the option.
+void convert(const RunText& text, RunOptions& o) {
+  try {
+    o.size = tutorial::parse_frame_size(text.size);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string("--size: ") + e.what());
+  }
+  try {
+    o.overlays = render::Overlays::parse(text.overlays);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string("--overlay: ") + e.what());
+  }
+  o.explain_json = text.explain_format == "json";
+}
+
+// CLI11's message, or which subcommand was expected when none was given.
+std::string parse_error_message(const CLI::App& app, const CLI::ParseError& e) {
+  if (!app.get_subcommands().empty()) return e.what();
+  const std::vector<std::string> rest = app.remaining();
+  return (rest.empty() ? std::string("expected") : "'" + rest.front() + "' is not") +
+         " a subcommand: run, scenes, show or check (see lamina --help)";
+}
+
+}  // namespace
+
+ParsedCommand parse_command_line(int argc, char** argv) {
+  CLI::App app("lamina: simulate Lamina scenes, write their traces and frames", "lamina");
+  app.set_help_all_flag("--help-all", "print the help of every subcommand");
+  app.footer(exit_codes);
+  app.require_subcommand(1);
+  Command c;
+  RunText text;
+  CLI::App* run = app.add_subcommand("run", "simulate a scene; write its trace, frames, or one step explained");
+  add_run_options(*run, c.run, text);
+  CLI::App* scenes = app.add_subcommand("scenes", "list the built-in scenes with a line on each");
+  CLI::App* show = app.add_subcommand("show", "print a scene as a JSON scene file, to copy and edit");
+  show->add_option("SCENE", c.scene, scene_help)->required();
+  CLI::App* check = app.add_subcommand("check", "validate a scene file; simulate nothing");
+  check->add_option("SCENE", c.scene, scene_help)->required();
+  for (CLI::App* sub : {run, scenes, show, check}) sub->footer(exit_codes);
+  try {
+    app.parse(argc, argv);
+    if (*run) convert(text, c.run);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return {std::nullopt, app.exit(e)};
+    std::cerr << "lamina: " << parse_error_message(app, e) << '\n';
+    return {std::nullopt, exit_bad_input};
+  } catch (const InputError& e) {
+    std::cerr << "lamina: " << e.what() << '\n';
+    return {std::nullopt, exit_bad_input};
+  }
+  c.kind = *run ? Command::Kind::run : *scenes ? Command::Kind::scenes
+         : *show ? Command::Kind::show : Command::Kind::check;
+  return {c, exit_ok};
+}
+
+}  // namespace lamina::cli

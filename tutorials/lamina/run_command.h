@@ -1,0 +1,33 @@
+// `lamina run SCENE`: simulate a scene, and write its trace, its frames, or one step explained.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "render/style.h"
+#include "render/overlay.h"
+
+namespace lamina::cli {
+
+struct RunOptions {
+  std::string scene;                            // SCENE: a file or a built-in name
+  std::optional<long> steps;                    // --steps (else the scene's `steps`)
+  std::optional<double> dt;                     // --dt, in s (else the scene's)
+  std::optional<int> iterations;                // --iterations (else the scene's)
+  std::optional<double> beta;                   // --beta (else the scene's)
+  bool no_cache = false;                        // --no-cache
+  std::optional<std::filesystem::path> trace;   // --trace FILE
+  std::optional<std::filesystem::path> frames;  // --frames DIR
+  int every = 1;                                // --every K: steps between frames
+  render::FrameSize size{1280, 720};            // --size WxH
+  render::Overlays overlays{render::Overlay::contacts};  // --overlay LIST
+  std::optional<long> explain;                  // --explain STEP
+  bool explain_json = false;                    // --explain-format json
+};
+
+// Runs it; prints one summary line on standard output (--explain: the step instead).
+// Throws SceneError, InputError or OutputFileError for bad input, having written nothing.
+void run_scene(const RunOptions& options);
+
+}  // namespace lamina::cli

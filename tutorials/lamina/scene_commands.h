@@ -1,0 +1,18 @@
+// `lamina scenes`, `lamina show SCENE` and `lamina check SCENE`: the scenes, without running them.
+#pragma once
+
+#include <string>
+
+namespace lamina::cli {
+
+// The built-in scenes, one per line: name, then its one-line description.
+void list_scenes();
+
+// The scene as a JSON scene file on standard output (docs/scene-format.md).
+void show_scene(const std::string& source);
+
+// Reads and validates the scene and builds its world; prints one line saying it is fine.
+// Throws SceneError or InputError naming the problem.
+void check_scene(const std::string& source);
+
+}  // namespace lamina::cli
