@@ -28,7 +28,17 @@ Eigen::VectorXd WarmStart::guess(const std::vector<ConstraintRow>& rows) const {
   return Eigen::VectorXd::Zero(static_cast<Eigen::Index>(rows.size()));
 }
 
-void WarmStart::remember(const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& solved) {
+void WarmStart::append_guess(const std::vector<ConstraintRow>& rows,
+                             std::vector<double>& out) const {
+  if (same_structure(Jmap, rows)) {
+    out.insert(out.end(), lambda.data(), lambda.data() + lambda.size());
+  } else {
+    out.insert(out.end(), rows.size(), 0.0);
+  }
+}
+
+void WarmStart::remember(const std::vector<ConstraintRow>& rows,
+                         const Eigen::Ref<const Eigen::VectorXd>& solved) {
   Jmap.resize(rows.size());
   for (size_t i = 0; i < rows.size(); ++i) Jmap[i] = rows[i].Jmap;
   lambda = solved;

@@ -37,8 +37,12 @@ struct WarmStart {
   // λ_exp for these rows: last step's λ if the rows are on the same bodies in the same order
   // (the same constraints), else zeros.
   Eigen::VectorXd guess(const std::vector<ConstraintRow>& rows) const;
-  // Keeps the rows' body pairs and their λ for the next step.
-  void remember(const std::vector<ConstraintRow>& rows, const Eigen::VectorXd& solved);
+  // The same guess appended to `out`, without a temporary (a World step allocates nothing).
+  void append_guess(const std::vector<ConstraintRow>& rows, std::vector<double>& out) const;
+  // Keeps the rows' body pairs and their λ for the next step (λ read in place, e.g. through an
+  // Eigen::Map).
+  void remember(const std::vector<ConstraintRow>& rows,
+                const Eigen::Ref<const Eigen::VectorXd>& solved);
 };
 
 // Advances the bodies by one step under gravity, the forces already accumulated on them, and the

@@ -15,52 +15,61 @@ Vec6 inverse_mass_times(const RigidBody& body, const Vec6& block) {
 
 Vec6 velocity_of(const RigidBody& body) {
   Vec6 v;
-  v << body.v, body.angular_velocity;
+  v.head<3>() = body.v;
+  v.tail<3>() = body.angular_velocity;
   return v;
 }
 
 Vec6 external_force_of(const RigidBody& body) {
   Vec6 f;
-  f << body.force, body.torque;
+  f.head<3>() = body.force;
+  f.tail<3>() = body.torque;
   return f;
 }
 
 double row_times(const ConstraintRow& row, const std::vector<Vec6>& per_body) {
-  double sum = row.Jsp[0].dot(per_body[row.Jmap[0]]);
-  if (!row.is_one_body()) sum += row.Jsp[1].dot(per_body[row.Jmap[1]]);
+  double sum = ordered_dot<6>(row.Jsp[0], per_body[row.Jmap[0]]);
+  if (!row.is_one_body()) sum += ordered_dot<6>(row.Jsp[1], per_body[row.Jmap[1]]);
   return sum;
+}
+
+void unconstrained_velocities(const std::vector<RigidBody>& bodies, double dt,
+                              std::vector<Vec6>& out) {
+  out.resize(bodies.size());
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    // eq. 3-16: V/Δt + M⁻¹ F_ext, the bracket of η, body by body
+    out[b] = velocity_of(bodies[b]) / dt +
+             inverse_mass_times(bodies[b], external_force_of(bodies[b]));
+  }
 }
 
 Mlcp assemble_mlcp(const std::vector<RigidBody>& bodies, std::vector<ConstraintRow> rows,
                    double dt) {
+  std::vector<Vec6> unconstrained;
+  unconstrained_velocities(bodies, dt, unconstrained);
+  return assemble_mlcp(bodies, std::move(rows), unconstrained, dt);
+}
+
+Mlcp assemble_mlcp(const std::vector<RigidBody>& bodies, std::vector<ConstraintRow> rows,
+                   const std::vector<Vec6>& unconstrained, double dt) {
   Mlcp mlcp;
   mlcp.body_count = static_cast<int>(bodies.size());
-  // V/Δt + M⁻¹ F_ext per body: the velocity each body would reach without constraints, per Δt.
-  std::vector<Vec6> unconstrained(bodies.size());
-  for (size_t b = 0; b < bodies.size(); ++b) {
-    unconstrained[b] = velocity_of(bodies[b]) / dt +
-                       inverse_mass_times(bodies[b], external_force_of(bodies[b]));
-  }
   const auto s = static_cast<Eigen::Index>(rows.size());
   mlcp.eta.resize(s);
   mlcp.d.resize(s);
   mlcp.Bsp.resize(rows.size());
   for (Eigen::Index i = 0; i < s; ++i) {
-    const ConstraintRow& row = rows[i];
-    // The text's Convert: Bᵀ_i = J_i M⁻¹, block by block.
-    mlcp.Bsp[i][0] = inverse_mass_times(bodies[row.Jmap[0]], row.Jsp[0]);
-    mlcp.Bsp[i][1] = row.is_one_body() ? Vec6::Zero()
-                                       : inverse_mass_times(bodies[row.Jmap[1]], row.Jsp[1]);
-    // d_i = J_i · B_i
-    mlcp.d[i] = row.Jsp[0].dot(mlcp.Bsp[i][0]) + row.Jsp[1].dot(mlcp.Bsp[i][1]);
-    // eq. 3-16: η = ζ/Δt − J (V/Δt + M⁻¹ F_ext)
-    mlcp.eta[i] = row.zeta / dt - row_times(row, unconstrained);
+    const RowTerms<6> terms = assemble_row<6>(bodies, rows[i], unconstrained, dt);
+    mlcp.Bsp[i] = terms.B;
+    mlcp.eta[i] = terms.eta;
+    mlcp.d[i] = terms.d;
   }
   mlcp.rows = std::move(rows);
   return mlcp;
 }
 
-std::vector<Vec6> transpose_multiply(const Mlcp& mlcp, const Eigen::VectorXd& lambda) {
+std::vector<Vec6> transpose_multiply(const Mlcp& mlcp,
+                                     const Eigen::Ref<const Eigen::VectorXd>& lambda) {
   std::vector<Vec6> a(mlcp.body_count, Vec6::Zero());
   for (size_t i = 0; i < mlcp.rows.size(); ++i) {
     const ConstraintRow& row = mlcp.rows[i];
@@ -70,7 +79,8 @@ std::vector<Vec6> transpose_multiply(const Mlcp& mlcp, const Eigen::VectorXd& la
   return a;
 }
 
-Eigen::VectorXd complementarity_slack(const Mlcp& mlcp, const Eigen::VectorXd& lambda) {
+Eigen::VectorXd complementarity_slack(const Mlcp& mlcp,
+                                      const Eigen::Ref<const Eigen::VectorXd>& lambda) {
   const std::vector<Vec6> a = transpose_multiply(mlcp, lambda);
   Eigen::VectorXd w(lambda.size());
   // eq. 3-23: W = J B λ − η
@@ -78,14 +88,12 @@ Eigen::VectorXd complementarity_slack(const Mlcp& mlcp, const Eigen::VectorXd& l
   return w;
 }
 
-std::array<double, 2> row_bounds(const ConstraintRow& row, const Eigen::VectorXd& lambda) {
-  if (row.friction_of < 0) return {row.lambda_min, row.lambda_max};
-  // eq. 3-26: a friction row is bounded by ±μ λc of its contact row
-  const double limit = row.mu * lambda[row.friction_of];
-  return {-limit, limit};
+std::array<double, 2> row_bounds(const ConstraintRow& row,
+                                 const Eigen::Ref<const Eigen::VectorXd>& lambda) {
+  return bounds_of(row, lambda.data());
 }
 
-double mlcp_residual(const Mlcp& mlcp, const Eigen::VectorXd& lambda) {
+double mlcp_residual(const Mlcp& mlcp, const Eigen::Ref<const Eigen::VectorXd>& lambda) {
   const Eigen::VectorXd w = complementarity_slack(mlcp, lambda);
   double sum = 0.0;
   for (Eigen::Index i = 0; i < w.size(); ++i) {
@@ -101,7 +109,7 @@ double mlcp_residual(const Mlcp& mlcp, const Eigen::VectorXd& lambda) {
 }
 
 void apply_constraint_forces(std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
-                             const Eigen::VectorXd& lambda) {
+                             const Eigen::Ref<const Eigen::VectorXd>& lambda) {
   for (size_t i = 0; i < rows.size(); ++i) {
     for (int k = 0; k < 2; ++k) {
       if (rows[i].Jmap[k] < 0) continue;

@@ -1,5 +1,6 @@
 // Box–box: the separating axis test, and the deepest vertex with the ties the literal
 // "deepest point" gets wrong (docs/ch4-contact-model.md, "Beyond the text").
+#include <algorithm>
 #include <limits>
 
 #include "contact/narrow_phase.h"
@@ -30,21 +31,39 @@ std::array<Vec2, 4> vertices_of(const Shape& box, const Pose2& pose) {
           pose.to_world(Vec2(h.x(), h.y())), pose.to_world(Vec2(-h.x(), h.y()))};
 }
 
-// The reference box's face that separates it most from the other box's vertices.
-struct BestFace {
-  Face face;          // the face of largest separation
-  double separation;  // its s_f, in m (> 0: apart)
+// The other box's vertices measured against the reference box's faces.
+struct FaceTable {
+  std::array<Face, 4> faces;               // the reference box's faces
+  std::array<std::array<double, 4>, 4> s;  // s[f][v] = n_f · (v − x_r) − h_f, in m (> 0: outside f)
+  int best = 0;                            // the face of largest separation
+  double separation = 0.0;                 // its s_f, in m (> 0: apart)
+
+  // Vertex v lies inside the reference box, or outside by at most `tolerance`: on the inner
+  // side of all four faces (contains() of shape.h, from the same numbers).
+  bool contains(int v, double tolerance) const {
+    return std::max({s[0][v], s[1][v], s[2][v], s[3][v]}) <= tolerance;
+  }
+  // How far vertex v is inside the best face: h_f − n_f · (v − x_r).
+  double depth(int v) const { return -s[best][v]; }
 };
 
-BestFace best_face(const Shape& box, const Pose2& pose, const std::array<Vec2, 4>& others) {
-  BestFace best{Face{Vec2::Zero(), 0.0}, -std::numeric_limits<double>::infinity()};
-  for (const Face& face : faces_of(box, pose)) {
-    double s = std::numeric_limits<double>::infinity();
-    // s_f = min over the other box's vertices of n_f · (v − x_r) − h_f
-    for (const Vec2& v : others) s = std::min(s, face.normal.dot(v - pose.x) - face.offset);
-    if (s > best.separation) best = BestFace{face, s};
+FaceTable face_table(const Shape& box, const Pose2& pose, const std::array<Vec2, 4>& others) {
+  FaceTable table;
+  table.faces = faces_of(box, pose);
+  table.separation = -std::numeric_limits<double>::infinity();
+  for (int f = 0; f < 4; ++f) {
+    double s_f = std::numeric_limits<double>::infinity();
+    for (int v = 0; v < 4; ++v) {
+      // s_f = min over the other box's vertices of n_f · (v − x_r) − h_f
+      table.s[f][v] = table.faces[f].normal.dot(others[v] - pose.x) - table.faces[f].offset;
+      s_f = std::min(s_f, table.s[f][v]);
+    }
+    if (s_f > table.separation) {
+      table.best = f;
+      table.separation = s_f;
+    }
   }
-  return best;
+  return table;
 }
 
 // The candidate points of a pair: at most the 4 vertices of each box; no allocation.
@@ -112,49 +131,42 @@ std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, co
   const std::array<Vec2, 4> corners2 = vertices_of(box2, pose2);
   // Separating axis test over both boxes' face normals: body 1's faces against body 2's
   // vertices and the other way round.
-  const std::array<BestFace, 2> best{best_face(box1, pose1, corners2),
-                                     best_face(box2, pose2, corners1)};
-  const double separation = std::max(best[0].separation, best[1].separation);
+  const std::array<FaceTable, 2> tables{face_table(box1, pose1, corners2),
+                                        face_table(box2, pose2, corners1)};
+  const double separation = std::max(tables[0].separation, tables[1].separation);
   if (separation > 0.0) return std::nullopt;  // a separating axis: apart (0 is touching)
 
   // Candidates: the incident vertices inside the reference box, trying both boxes as the
   // reference when their faces separate equally (a box resting half over another has one
   // supported vertex of its own and one of the box below).
-  const std::array<const Shape*, 2> shapes{&box1, &box2};
-  const std::array<const Pose2*, 2> poses{&pose1, &pose2};
   const std::array<const std::array<Vec2, 4>*, 2> corners{&corners1, &corners2};
+  const auto candidate = [&](int ref, int v) {
+    const FaceTable& table = tables[ref];
+    Collision c;
+    c.point = (*corners[1 - ref])[v];
+    c.depth = table.depth(v);
+    // n points from body 1 to body 2: body 1's outward face normal, or body 2's reversed.
+    const Vec2& normal = table.faces[table.best].normal;
+    c.normal = ref == 0 ? normal : Vec2(-normal);
+    c.reference = ref;
+    return c;
+  };
   Candidates candidates;
   for (int ref = 0; ref < 2; ++ref) {
-    if (best[ref].separation < separation - tie_tolerance) continue;
-    const Face& face = best[ref].face;
-    for (const Vec2& v : *corners[1 - ref]) {
-      if (!contains(*shapes[ref], *poses[ref], v, containment_tolerance)) continue;
-      Collision c;
-      c.point = v;
-      c.depth = face.offset - face.normal.dot(v - poses[ref]->x);
-      // n points from body 1 to body 2: body 1's outward face normal, or body 2's reversed.
-      c.normal = ref == 0 ? face.normal : Vec2(-face.normal);
-      c.reference = ref;
-      candidates.add(c);
+    if (tables[ref].separation < separation - tie_tolerance) continue;
+    for (int v = 0; v < 4; ++v) {
+      if (tables[ref].contains(v, containment_tolerance)) candidates.add(candidate(ref, v));
     }
   }
   if (candidates.count == 0) {
     // Two boxes crossing like a plus sign overlap with no vertex inside the other: return the
     // incident vertex deepest past the separating-axis face.
-    const int ref = best[0].separation >= best[1].separation ? 0 : 1;
-    const Face& face = best[ref].face;
-    Collision c;
-    c.depth = -std::numeric_limits<double>::infinity();
-    for (const Vec2& v : *corners[1 - ref]) {
-      const double depth = face.offset - face.normal.dot(v - poses[ref]->x);
-      if (depth > c.depth) {
-        c.depth = depth;
-        c.point = v;
-      }
+    const int ref = tables[0].separation >= tables[1].separation ? 0 : 1;
+    int deepest = 0;
+    for (int v = 1; v < 4; ++v) {
+      if (tables[ref].depth(v) > tables[ref].depth(deepest)) deepest = v;
     }
-    c.normal = ref == 0 ? face.normal : Vec2(-face.normal);
-    c.reference = ref;
-    return c;
+    return candidate(ref, deepest);
   }
   return choose(candidates, cached, tie_tolerance);
 }

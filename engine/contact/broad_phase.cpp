@@ -4,14 +4,35 @@
 #include <numeric>
 
 namespace lamina {
+namespace {
+
+// Sorts a nearly sorted sequence in about one pass (last step's order, the bodies having moved
+// a little since).
+template <class Before>
+void insertion_sort(std::vector<int>& order, const Before& before) {
+  for (size_t k = 1; k < order.size(); ++k) {
+    const int body = order[k];
+    size_t l = k;
+    for (; l > 0 && before(body, order[l - 1]); --l) order[l] = order[l - 1];
+    order[l] = body;
+  }
+}
+
+}  // namespace
 
 void sort_and_sweep(const std::vector<Aabb>& boxes, std::vector<int>& order,
                     std::vector<BodyPair>& pairs) {
-  order.resize(boxes.size());
-  std::iota(order.begin(), order.end(), 0);
-  // 1. sort by min.x; equal edges keep index order
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return boxes[a].min.x() < boxes[b].min.x(); });
+  // 1. sort by min.x, equal edges in index order
+  const auto before = [&](int a, int b) {
+    return boxes[a].min.x() < boxes[b].min.x() || (boxes[a].min.x() == boxes[b].min.x() && a < b);
+  };
+  if (order.size() != boxes.size()) {
+    order.resize(boxes.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), before);
+  } else {
+    insertion_sort(order, before);
+  }
   pairs.clear();
   for (size_t k = 0; k < order.size(); ++k) {
     const Aabb& box = boxes[order[k]];

@@ -25,8 +25,11 @@ struct BodyPair {
   bool operator==(const BodyPair& o) const { return first == o.first && second == o.second; }
 };
 
-// The pairs of overlapping (or touching) boxes, sorted. `order` is scratch space for the
-// sorted body indices; passing the same vector every step keeps the step free of allocation.
+// The pairs of overlapping (or touching) boxes, sorted. `order` holds the body indices sorted by
+// min.x: empty (or of another size) on the first call, then last call's order for the same
+// bodies, which an insertion sort brings up to date in about one pass when bodies move a little
+// between steps (sort and sweep's frame coherence). Passing the same vector every step also
+// keeps the step free of allocation.
 void sort_and_sweep(const std::vector<Aabb>& boxes, std::vector<int>& order,
                     std::vector<BodyPair>& pairs);
 

@@ -37,6 +37,11 @@ void place(Contact& contact, const Pose2& pose1, const Pose2& pose2) {
   contact.point = 0.5 * (p1 + p2);
 }
 
+Vec2 placed_point(const Contact& contact, const Pose2& pose1, const Pose2& pose2) {
+  // eq. 5-12 for both anchors, then their midpoint
+  return 0.5 * (pose1.to_world(contact.anchor[0]) + pose2.to_world(contact.anchor[1]));
+}
+
 void reanchor(Contact& contact, const Pose2& pose1, const Pose2& pose2) {
   const int ref = contact.reference;
   const Vec2 p1 = pose1.to_world(contact.anchor[0]);

@@ -49,6 +49,10 @@ Contact make_contact(const Collision& collision, const Pose2& pose1, const Pose2
 // point, normal, separation (eq. 4-1) and drift.
 void place(Contact& contact, const Pose2& pose1, const Pose2& pose2);
 
+// The point c = (p1 + p2)/2 of a contact re-placed from its anchors (eq. 5-12), without the
+// rest of place's measuring.
+Vec2 placed_point(const Contact& contact, const Pose2& pose1, const Pose2& pose2);
+
 // Moves the reference body's anchor under the incident body's point, so the drift is zero and
 // the separation unchanged (notes fix 3: a sliding contact is re-anchored, not dropped).
 void reanchor(Contact& contact, const Pose2& pose1, const Pose2& pose2);

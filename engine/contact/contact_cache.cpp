@@ -1,7 +1,5 @@
 #include "contact/contact_cache.h"
 
-#include <algorithm>
-
 namespace lamina {
 namespace {
 
@@ -69,16 +67,15 @@ void merge(ContactPair& pair, Contact fresh, const CacheSettings& settings) {
 
 }  // namespace
 
-CachedPoints ContactCache::cached_points(const BodyPair& bodies,
-                                         const std::vector<Pose2>& poses) const {
+CachedPoints ContactCache::cached_points(const BodyPair& bodies, const std::vector<Pose2>& poses,
+                                         size_t& cursor) const {
   CachedPoints cached;
-  const auto it = std::lower_bound(pairs_.begin(), pairs_.end(), bodies,
-                                   [](const ContactPair& p, const BodyPair& b) { return p.bodies < b; });
-  if (it == pairs_.end() || !(it->bodies == bodies)) return cached;
-  for (int k = 0; k < it->count; ++k) {
-    Contact c = it->contacts[k];
-    place(c, poses[bodies.first], poses[bodies.second]);
-    cached.points[cached.count++] = c.point;
+  while (cursor < pairs_.size() && pairs_[cursor].bodies < bodies) ++cursor;
+  if (cursor == pairs_.size() || !(pairs_[cursor].bodies == bodies)) return cached;
+  const ContactPair& pair = pairs_[cursor];
+  for (int k = 0; k < pair.count; ++k) {
+    cached.points[cached.count++] =
+        placed_point(pair.contacts[k], poses[bodies.first], poses[bodies.second]);
   }
   return cached;
 }

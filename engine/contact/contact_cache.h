@@ -43,7 +43,9 @@ class ContactCache {
   std::vector<ContactPair>& pairs() { return pairs_; }
 
   // The cached points of a pair re-placed at the current poses, for the narrow phase's ties.
-  CachedPoints cached_points(const BodyPair& bodies, const std::vector<Pose2>& poses) const;
+  // Pairs are asked for in sorted order: `cursor` (0 before the first) walks the cache once.
+  CachedPoints cached_points(const BodyPair& bodies, const std::vector<Pose2>& poses,
+                             size_t& cursor) const;
 
   // Steps 1 and 2 above. `fresh` must be sorted by pair; materials give a new pair's μ and e.
   void update(const std::vector<FreshCollision>& fresh, const std::vector<Pose2>& poses,

@@ -14,8 +14,6 @@
 
 #include <vector>
 
-#include <Eigen/Core>
-
 #include "constraints/constraint_row.h"
 #include "contact/contact.h"
 #include "motion/rigid_body.h"
@@ -57,12 +55,21 @@ void add_contact_rows(const std::vector<ContactPair>& pairs, const std::vector<R
                       std::vector<double>& warm_start, std::vector<RowKind>& kinds);
 
 // Stores the solved λ of the rows add_contact_rows appended (from row 0) into the cache.
-void store_contact_lambdas(std::vector<ContactPair>& pairs, const Eigen::VectorXd& lambda,
+void store_contact_lambdas(std::vector<ContactPair>& pairs, const std::vector<double>& lambda,
                            const ContactSettings& settings);
 
-// Split impulse: one row per contact asking J V_p ≥ push-out (or gap) for the position solve.
-void add_position_rows(const std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
-                       const ContactSettings& settings, double dt, std::vector<ConstraintRow>& rows);
+// Split impulse: for each contact, the index of its contact row among the rows add_contact_rows
+// appended (from row 0), and the ζ the same row asks of the position solve: J V_p ≥ push-out
+// (or gap). `rows` and `zeta` are overwritten.
+void position_targets(const std::vector<ContactPair>& pairs, const ContactSettings& settings,
+                      double dt, std::vector<int>& rows, std::vector<double>& zeta);
+
+// Split impulse: the contact rows of add_contact_rows (in `velocity_rows` from row 0) again, one
+// per contact, with the ζ of position_targets: the position MLCP's rows, appended to `rows`.
+void add_position_rows(const std::vector<ContactPair>& pairs,
+                       const std::vector<ConstraintRow>& velocity_rows,
+                       const ContactSettings& settings, double dt,
+                       std::vector<ConstraintRow>& rows);
 
 // J V of a row at the bodies' current velocities (eq. 5-4, 5-5: the contact point's velocity along n).
 double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodies);

@@ -44,6 +44,34 @@ bool is_planar(const RigidBody& b) {
          b.angular_velocity.x() == 0.0 && b.angular_velocity.y() == 0.0;
 }
 
+// λ kept in a std::vector, seen as an Eigen vector without a copy.
+Eigen::Map<const Eigen::VectorXd> lambda_view(const std::vector<double>& lambda) {
+  return {lambda.data(), static_cast<Eigen::Index>(lambda.size())};
+}
+
+// PGS on λ in place, λ_exp on entry. With a report, whose mlcp holds the rows assembled, it also
+// records λ_exp, the residual after every sweep, λ and W = J B λ − η (eq. 3-23).
+void solve_in_place(PgsWorkspace& solver, int iterations, std::vector<double>& lambda,
+                    StepReport* report) {
+  PgsSettings settings;
+  settings.iterations = iterations;
+  settings.record_residuals = report != nullptr;
+  PgsResult sweeps;  // the sweeps run and their residuals; λ itself stays in `lambda`
+  if (report != nullptr) report->lambda_exp = lambda_view(lambda);
+  solver.solve(lambda.data(), settings, report != nullptr ? &report->mlcp : nullptr, sweeps);
+  if (report == nullptr) return;
+  sweeps.lambda = lambda_view(lambda);
+  report->W = complementarity_slack(report->mlcp, lambda_view(lambda));
+  report->solution = std::move(sweeps);
+}
+
+// No point deeper than the slop and no gap to close: every η ≤ 0, so λ = 0 solves the position
+// MLCP (W = −η ≥ 0, eq. 3-24) and PGS started from λ = 0 keeps it: no push-out this step.
+// Box2D's position pass stops early in the same case.
+bool nothing_to_push(const std::vector<double>& eta) {
+  return std::all_of(eta.begin(), eta.end(), [](double e) { return e <= 0.0; });
+}
+
 }  // namespace
 
 World::World(const WorldSettings& settings) : settings_(settings) { validate(settings_); }
@@ -93,7 +121,10 @@ void World::step() { advance(nullptr); }
 void World::step(WorldReport& report) { advance(&report); }
 
 void World::advance(WorldReport* report) {
-  if (report != nullptr) report->time = time_;
+  if (report != nullptr) {
+    *report = WorldReport();  // a reused report keeps nothing of its last step
+    report->time = time_;
+  }
   apply_forces();          // 1
   detect_collisions();     // 2
   update_cache();          // 3
@@ -118,12 +149,13 @@ void World::detect_collisions() {
   }
   sort_and_sweep(boxes_, sweep_order_, candidate_pairs_);
   fresh_.clear();
+  size_t cursor = 0;  // the cache's pairs, walked along with the sorted candidates
   for (const BodyPair& pair : candidate_pairs_) {
     if (bodies_[pair.first].is_static() && bodies_[pair.second].is_static()) continue;
     if (std::binary_search(jointed_.begin(), jointed_.end(), pair)) continue;
     // With the cache off there is nothing to break ties against: a first contact every step.
     const CachedPoints cached =
-        settings_.cache.enabled ? cache_.cached_points(pair, poses_) : CachedPoints{};
+        settings_.cache.enabled ? cache_.cached_points(pair, poses_, cursor) : CachedPoints{};
     const std::optional<Collision> collision =
         collide(shapes_[pair.first], poses_[pair.first], shapes_[pair.second],
                 poses_[pair.second], cached, settings_.cache.tie_tolerance);
@@ -134,7 +166,6 @@ void World::detect_collisions() {
 void World::update_cache() { cache_.update(fresh_, poses_, shapes_, materials_, settings_.cache); }
 
 void World::build_rows() {
-  rows_ = std::move(mlcp_.rows);  // reuse last step's row storage
   rows_.clear();
   warm_start_.clear();
   kinds_.clear();
@@ -144,33 +175,28 @@ void World::build_rows() {
   for (const auto& joint : joints_) {
     joint->write_rows(bodies_, settings_.dt, settings_.contact.beta, joint_rows_);
   }
-  const Eigen::VectorXd joint_guess = joint_warm_start_.guess(joint_rows_);
+  joint_warm_start_.append_guess(joint_rows_, warm_start_);
   rows_.insert(rows_.end(), joint_rows_.begin(), joint_rows_.end());
-  warm_start_.insert(warm_start_.end(), joint_guess.data(), joint_guess.data() + joint_guess.size());
   kinds_.insert(kinds_.end(), joint_rows_.size(), RowKind::joint);
 }
 
 void World::solve(WorldReport* report) {
   const double dt = settings_.dt;
-  // λ_exp: the cached λ of every contact (zero with the cache off), last step's for joints
-  const Eigen::VectorXd lambda_exp =
-      Eigen::Map<const Eigen::VectorXd>(warm_start_.data(), static_cast<Eigen::Index>(warm_start_.size()));
   // eq. 3-16: J B λ = η with B = M⁻¹ Jᵀ, η = ζ/Δt − J (V/Δt + M⁻¹ F_ext)
-  mlcp_ = assemble_mlcp(bodies_, std::move(rows_), dt);
-  PgsSettings pgs;
-  pgs.iterations = settings_.iterations;
-  pgs.record_residuals = report != nullptr;
+  unconstrained_velocities(bodies_, dt, unconstrained_);
+  velocity_solver_.assemble(bodies_, rows_, unconstrained_, dt);
+  if (report != nullptr) report->velocity.mlcp = assemble_mlcp(bodies_, rows_, unconstrained_, dt);
+  // λ_exp: the cached λ of every contact (zero with the cache off), last step's for joints
+  lambda_ = warm_start_;
   // eq. 3-24 by Projected Gauss-Seidel, friction bounds ±μ λc read as λc changes
-  solution_ = solve_pgs(mlcp_, lambda_exp, pgs);
-  store_contact_lambdas(cache_.pairs(), solution_.lambda, settings_.contact);
-  joint_warm_start_.remember(joint_rows_,
-                             solution_.lambda.tail(static_cast<Eigen::Index>(joint_rows_.size())));
+  solve_in_place(velocity_solver_, settings_.iterations, lambda_,
+                 report != nullptr ? &report->velocity : nullptr);
+  store_contact_lambdas(cache_.pairs(), lambda_, settings_.contact);
+  const auto joint_count = static_cast<Eigen::Index>(joint_rows_.size());
+  joint_warm_start_.remember(joint_rows_, lambda_view(lambda_).tail(joint_count));
   if (report != nullptr) {
     report->contacts = contact_infos(cache_.pairs());
     report->kinds = kinds_;
-    report->velocity = StepReport{mlcp_, lambda_exp, solution_,
-                                  complementarity_slack(mlcp_, solution_.lambda)};
-    report->position = StepReport{};
   }
   solve_positions(report);
 }
@@ -179,28 +205,33 @@ void World::solve_positions(WorldReport* report) {
   push_out_.clear();
   if (settings_.contact.correction != PositionCorrection::split_impulse) return;
   const double dt = settings_.dt;
-  std::vector<ConstraintRow> rows;
-  add_position_rows(cache_.pairs(), bodies_, settings_.contact, dt, rows);
-  Mlcp mlcp = assemble_mlcp(bodies_, std::move(rows), dt);
-  // eq. 3-16 for the push-out alone: the bodies start from rest under no force, η = ζ/Δt
-  for (size_t i = 0; i < mlcp.rows.size(); ++i) mlcp.eta[i] = mlcp.rows[i].zeta / dt;
-  PgsSettings pgs;
-  pgs.iterations = settings_.position_iterations;
-  pgs.record_residuals = report != nullptr;
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(mlcp.eta.size());
-  PgsResult solution = solve_pgs(mlcp, zero, pgs);
+  // The velocity MLCP's contact rows again, each asking J V_p ≥ its push-out (or gap) ζ
+  position_targets(cache_.pairs(), settings_.contact, dt, position_rows_, position_eta_);
+  // eq. 3-16 for the push-out alone: the bodies start from rest under no force, so η = ζ/Δt
+  for (double& eta : position_eta_) eta /= dt;
+  if (report == nullptr && nothing_to_push(position_eta_)) return;  // a report shows the sweeps
+  position_solver_.copy_rows(velocity_solver_, position_rows_, position_eta_);
+  if (report != nullptr) report->position.mlcp = position_mlcp();
+  position_lambda_.assign(position_rows_.size(), 0.0);
+  solve_in_place(position_solver_, settings_.position_iterations, position_lambda_,
+                 report != nullptr ? &report->position : nullptr);
   // The push-out velocity of each body: M⁻¹ Jᵀ λ Δt = B λ Δt
-  push_out_ = transpose_multiply(mlcp, solution.lambda);
-  for (Vec6& v : push_out_) v *= dt;
-  if (report != nullptr) {
-    report->position =
-        StepReport{mlcp, zero, solution, complementarity_slack(mlcp, solution.lambda)};
+  push_out_.resize(bodies_.size());
+  for (size_t b = 0; b < bodies_.size(); ++b) {
+    push_out_[b] = position_solver_.velocity_change(static_cast<int>(b)) * dt;
   }
+}
+
+Mlcp World::position_mlcp() const {
+  std::vector<ConstraintRow> rows;
+  add_position_rows(cache_.pairs(), rows_, settings_.contact, settings_.dt, rows);
+  const std::vector<Vec6> at_rest(bodies_.size(), Vec6::Zero());
+  return assemble_mlcp(bodies_, std::move(rows), at_rest, settings_.dt);
 }
 
 void World::add_constraint_forces() {
   // eq. 3-11, 5-9: F_c = Jᵀ λ
-  apply_constraint_forces(bodies_, mlcp_.rows, solution_.lambda);
+  velocity_solver_.add_constraint_forces(bodies_, lambda_.data());
 }
 
 void World::integrate_bodies() {

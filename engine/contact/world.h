@@ -80,6 +80,7 @@ class World {
   void build_rows();
   void solve(WorldReport* report);
   void solve_positions(WorldReport* report);
+  Mlcp position_mlcp() const;  // the split-impulse MLCP in the text's form, for a report
   void add_constraint_forces();
   void integrate_bodies();
 
@@ -93,18 +94,24 @@ class World {
   ContactCache cache_;                 // the contacts kept from step to step
   WarmStart joint_warm_start_;         // the joints' λ from the last step
 
-  // Working data of one step, kept so that steps reuse their memory.
+  // Working data of one step, kept so that steps reuse their memory (a steady step allocates
+  // nothing: tests/test_step_allocations.cpp).
   std::vector<Pose2> poses_;                 // each body's planar pose at t
   std::vector<Aabb> boxes_;                  // each body's bounding box at t
-  std::vector<int> sweep_order_;             // sort and sweep's scratch
+  std::vector<int> sweep_order_;             // bodies by min.x, kept for the next sort
   std::vector<BodyPair> candidate_pairs_;    // the broad phase's pairs
   std::vector<FreshCollision> fresh_;        // the narrow phase's deepest points
-  std::vector<ConstraintRow> rows_;          // the rows being built
+  std::vector<ConstraintRow> rows_;          // the velocity MLCP's rows: contacts', then joints'
   std::vector<ConstraintRow> joint_rows_;    // the joints' rows being built
   std::vector<double> warm_start_;           // λ_exp for rows_, in N
   std::vector<RowKind> kinds_;               // what each of rows_ stands for
-  Mlcp mlcp_;                                // the velocity MLCP (eq. 3-16)
-  PgsResult solution_;                       // its λ
+  std::vector<Vec6> unconstrained_;          // V/Δt + M⁻¹ F_ext per body (eq. 3-16), m/s², rad/s²
+  PgsWorkspace velocity_solver_;             // the velocity MLCP (eq. 3-16), packed for PGS
+  std::vector<double> lambda_;               // its λ, in N
+  std::vector<int> position_rows_;           // split impulse: each contact's row in rows_
+  std::vector<double> position_eta_;         // and η = ζ/Δt of its position row, in m/s²
+  PgsWorkspace position_solver_;             // the position MLCP, packed for PGS
+  std::vector<double> position_lambda_;      // its λ, in N
   std::vector<Vec6> push_out_;               // split impulse: each body's [v; ω] push-out, m/s, rad/s
 };
 

@@ -1,0 +1,300 @@
+#include "benchmarks/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+#include <tuple>
+
+namespace lamina {
+namespace {
+
+// The sweeps Lamina's docs give a standing pyramid: WorldSettings' default
+// (docs/ch5-walkthrough.md).
+constexpr int recommended_iterations = 10;
+constexpr int box2d_iterations = 8;  // Box2D's velocity iterations (Box2dSettings)
+
+std::string fixed(double value, int digits) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", digits, value);
+  return text;
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The repetitions of one benchmark: their median times, and the run whose time is nearest the
+// median for everything else (contacts, standing: the same in every repetition).
+struct Summary {
+  int repetitions = 0;
+  double ms = 0.0;       // median CPU ms per step
+  double ms_min = 0.0;   // fastest repetition
+  double ms_max = 0.0;   // slowest repetition
+  double wall_ms = 0.0;  // median wall-clock ms per step
+  PyramidRun run;        // the median repetition
+};
+
+std::optional<Summary> summary(const Measurements& m, const RunKey& key) {
+  const auto it = m.runs.find(key);
+  if (it == m.runs.end() || it->second.empty()) return std::nullopt;
+  std::vector<double> ms;
+  std::vector<double> wall;
+  for (const PyramidRun& run : it->second) {
+    ms.push_back(run.ms_per_step);
+    wall.push_back(run.wall_ms_per_step);
+  }
+  Summary s{static_cast<int>(ms.size()), median(ms), *std::min_element(ms.begin(), ms.end()),
+            *std::max_element(ms.begin(), ms.end()), median(wall), it->second.front()};
+  for (const PyramidRun& run : it->second) {
+    if (std::abs(run.ms_per_step - s.ms) < std::abs(s.run.ms_per_step - s.ms)) s.run = run;
+  }
+  return s;
+}
+
+RunKey box2d_key(int base) { return {"Box2D", base, box2d_iterations}; }
+
+std::vector<int> bases(const Measurements& m) {
+  std::vector<int> out;
+  for (const auto& [key, runs] : m.runs) {
+    if (std::find(out.begin(), out.end(), key.base) == out.end()) out.push_back(key.base);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string read_first_line(const std::string& path, const std::string& prefix) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind(prefix, 0) == 0) return line.substr(line.find(':') + 2);
+  }
+  return "unknown";
+}
+
+std::string machine_table(const Measurements& m) {
+  std::ostringstream out;
+  out << "| | |\n|---|---|\n"
+      << "| CPU | " << read_first_line("/proc/cpuinfo", "model name") << " |\n"
+      << "| cores | " << std::thread::hardware_concurrency() << " (the benchmarks use one) |\n"
+      << "| compiler | GCC " << __VERSION__ << ", -O2 -ffp-contract=off (Release) |\n"
+      << "| Box2D | " << LAMINA_BOX2D_VERSION << " (Debian's libbox2d) |\n"
+      << "| load average (1, 5, 15 min; running, total tasks) | before: " << m.load_before
+      << "; after: " << m.load_after << " |\n";
+  return out.str();
+}
+
+std::string standing_cells(const PyramidRun& run) {
+  return fixed(run.apex_shift, 3) + " | " + fixed(run.largest_sideways, 3) + " | " +
+         (run.standing() ? "yes" : "no");
+}
+
+// "0.83× — met" or "1.12× — missed by 0.12 (12 %)" against a bar.
+std::string against(double ratio, double bar) {
+  if (ratio <= bar) return fixed(ratio, 2) + "× ≤ " + fixed(bar, 1) + ": met";
+  return fixed(ratio, 2) + "× > " + fixed(bar, 1) + ": missed by " + fixed(ratio - bar, 2) + " (" +
+         fixed(100.0 * (ratio - bar) / bar, 0) + " %)";
+}
+
+void pyramid_rows(const Measurements& m, int base, std::ostringstream& out,
+                  std::ostringstream& verdicts) {
+  const std::optional<Summary> box2d = summary(m, box2d_key(base));
+  const RunKey keys[] = {box2d_key(base), {"Lamina", base, recommended_iterations},
+                         {"Lamina", base, box2d_iterations}};
+  for (const RunKey& key : keys) {
+    const std::optional<Summary> s = summary(m, key);
+    if (!s) continue;
+    const bool lamina = key.engine == "Lamina";
+    const std::string ratio = lamina && box2d ? fixed(s->ms / box2d->ms, 2) + "× (" +
+                                                    fixed(s->ms_min / box2d->ms_min, 2) + "×)"
+                                              : "–";
+    out << "| " << base << " (" << s->run.boxes << " boxes) | " << key.engine
+        << (lamina && key.iterations == recommended_iterations ? " (recommended)" : "") << " | "
+        << key.iterations << " / " << s->run.position_iterations << " | " << fixed(s->ms, 3)
+        << " (" << fixed(s->ms_min, 3) << "–" << fixed(s->ms_max, 3) << ") | "
+        << fixed(s->wall_ms, 3) << " | " << ratio << " | " << standing_cells(s->run) << " |\n";
+    if (lamina && box2d && key.iterations == box2d_iterations) {
+      verdicts << "- base " << base << ", equal sweeps (8 / 3), medians: Lamina ÷ Box2D = "
+               << against(s->ms / box2d->ms, 1.0) << " (target); "
+               << against(s->ms / box2d->ms, 0.5) << " (goal). Fastest runs: " << fixed(s->ms_min / box2d->ms_min, 2) << "×.\n";
+    }
+  }
+}
+
+std::string pyramids_table(const Measurements& m) {
+  std::ostringstream out;
+  std::ostringstream verdicts;
+  out << "| pyramid | engine | sweeps (velocity / position) | CPU ms per step, median (range) | "
+         "wall ms per step | Lamina ÷ Box2D, medians (fastest runs) | 10 s: apex moved (m) | "
+         "10 s: largest sideways move (m) | standing |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const int base : {20, 40}) pyramid_rows(m, base, out, verdicts);
+  return out.str() + "\n" + verdicts.str();
+}
+
+// Least-squares slope of ln(ms) against ln(velocity rows): 1 is linear growth.
+std::optional<double> growth_exponent(const Measurements& m, const std::string& engine) {
+  std::vector<std::pair<double, double>> points;
+  for (const int base : bases(m)) {
+    const std::optional<Summary> s =
+        summary(m, {engine, base, box2d_iterations});
+    if (s) points.emplace_back(std::log(s->run.velocity_rows), std::log(s->ms));
+  }
+  if (points.size() < 2) return std::nullopt;
+  double mx = 0.0, my = 0.0;
+  for (const auto& [x, y] : points) mx += x / points.size(), my += y / points.size();
+  double sxy = 0.0, sxx = 0.0;
+  for (const auto& [x, y] : points) sxy += (x - mx) * (y - my), sxx += (x - mx) * (x - mx);
+  return sxy / sxx;
+}
+
+std::string scaling_table(const Measurements& m) {
+  std::ostringstream out;
+  out << "| base | boxes | contact points, Lamina / Box2D | velocity rows, Lamina / Box2D | "
+         "Lamina ms per step | Box2D ms per step | Lamina ÷ Box2D | Lamina µs per row-sweep | "
+         "Box2D µs per row-sweep |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const int base : bases(m)) {
+    const std::optional<Summary> l = summary(m, {"Lamina", base, box2d_iterations});
+    const std::optional<Summary> b = summary(m, box2d_key(base));
+    if (!l || !b) continue;
+    out << "| " << base << " | " << l->run.boxes << " | " << l->run.contact_points << " / "
+        << b->run.contact_points << " | " << l->run.velocity_rows << " / " << b->run.velocity_rows
+        << " | " << fixed(l->ms, 3) << " | " << fixed(b->ms, 3) << " | " << fixed(l->ms / b->ms, 2)
+        << "× | " << fixed(l->run.us_per_row_sweep(), 4) << " | "
+        << fixed(b->run.us_per_row_sweep(), 4) << " |\n";
+  }
+  const std::optional<double> lamina = growth_exponent(m, "Lamina");
+  const std::optional<double> box2d = growth_exponent(m, "Box2D");
+  if (lamina && box2d) {
+    out << "\nGrowth of the time per step with the velocity rows, as the exponent k of "
+           "time ∝ rowsᵏ fitted over these bases (1 is linear): Lamina "
+        << fixed(*lamina, 2) << ", Box2D " << fixed(*box2d, 2) << ".\n";
+  }
+  return out.str();
+}
+
+std::string warm_start_table(const Measurements& m) {
+  std::ostringstream out;
+  out << "| pyramid | steps measured | ‖W‖ asked, ÷ ‖W(λ = 0)‖ | sweeps from the cached λ | "
+         "sweeps from λ = 0 |\n|---|---|---|---|---|\n";
+  for (const WarmStartRun& w : m.warm_starts) {
+    for (size_t r = 0; r < w.reductions.size(); ++r) {
+      out << "| base " << w.base << " | " << w.first_step << "–" << w.first_step + w.steps - 1
+          << " | " << w.reductions[r] << " | " << fixed(w.warm_sweeps[r], 1) << " | "
+          << fixed(w.cold_sweeps[r], 1) << " |\n";
+    }
+  }
+  out << "\nAfter 10 sweeps (the recommended count), ‖W‖ ÷ ‖W(λ = 0)‖:";
+  for (const WarmStartRun& w : m.warm_starts) {
+    out << " base " << w.base << ", " << fixed(w.warm_residual_10, 4) << " from the cached λ and "
+        << fixed(w.cold_residual_10, 4) << " from λ = 0;";
+  }
+  out << " at most " << (m.warm_starts.empty() ? 0 : m.warm_starts.front().max_sweeps)
+      << " sweeps were tried.\n";
+  return out.str();
+}
+
+std::string pyramids_csv(const Measurements& m) {
+  std::ostringstream out;
+  out << "engine,base,boxes,velocity_iterations,position_iterations,repetitions,ms_per_step,"
+         "ms_per_step_min,ms_per_step_max,wall_ms_per_step,contact_points,apex_shift_m,"
+         "largest_sideways_m,standing\n";
+  for (const auto& [key, runs] : m.runs) {
+    const Summary s = *summary(m, key);
+    out << key.engine << ',' << key.base << ',' << s.run.boxes << ',' << key.iterations << ','
+        << s.run.position_iterations << ',' << s.repetitions << ',' << fixed(s.ms, 4) << ','
+        << fixed(s.ms_min, 4) << ',' << fixed(s.ms_max, 4) << ',' << fixed(s.wall_ms, 4) << ','
+        << s.run.contact_points << ',' << fixed(s.run.apex_shift, 4) << ','
+        << fixed(s.run.largest_sideways, 4) << ',' << (s.run.standing() ? 1 : 0) << '\n';
+  }
+  return out.str();
+}
+
+std::string scaling_csv(const Measurements& m) {
+  std::ostringstream out;
+  out << "base,boxes,lamina_ms_per_step,box2d_ms_per_step,lamina_velocity_rows,"
+         "box2d_velocity_rows,lamina_us_per_row_sweep,box2d_us_per_row_sweep\n";
+  for (const int base : bases(m)) {
+    const std::optional<Summary> l = summary(m, {"Lamina", base, box2d_iterations});
+    const std::optional<Summary> b = summary(m, box2d_key(base));
+    if (!l || !b) continue;
+    out << base << ',' << l->run.boxes << ',' << fixed(l->ms, 4) << ',' << fixed(b->ms, 4) << ','
+        << l->run.velocity_rows << ',' << b->run.velocity_rows << ','
+        << fixed(l->run.us_per_row_sweep(), 5) << ',' << fixed(b->run.us_per_row_sweep(), 5)
+        << '\n';
+  }
+  return out.str();
+}
+
+std::string warm_start_csv(const Measurements& m) {
+  std::ostringstream out;
+  out << "base,first_step,steps,reduction,warm_sweeps,cold_sweeps\n";
+  for (const WarmStartRun& w : m.warm_starts) {
+    for (size_t r = 0; r < w.reductions.size(); ++r) {
+      out << w.base << ',' << w.first_step << ',' << w.steps << ',' << w.reductions[r] << ','
+          << fixed(w.warm_sweeps[r], 2) << ',' << fixed(w.cold_sweeps[r], 2) << '\n';
+    }
+  }
+  return out.str();
+}
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  if (!out) throw std::runtime_error(path.string() + ": cannot be written");
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+bool RunKey::operator<(const RunKey& o) const {
+  return std::tie(engine, base, iterations) < std::tie(o.engine, o.base, o.iterations);
+}
+
+Tables make_tables(const Measurements& m) {
+  return {{"machine", machine_table(m)},         {"pyramids", pyramids_table(m)},
+          {"scaling", scaling_table(m)},         {"warm_start", warm_start_table(m)},
+          {"pyramids.csv", pyramids_csv(m)},     {"scaling.csv", scaling_csv(m)},
+          {"warm_start.csv", warm_start_csv(m)}};
+}
+
+void write_tables(const Tables& tables, const std::string& folder) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw std::runtime_error(folder + ": cannot be created (" + error.message() + ")");
+  for (const auto& [name, text] : tables) {
+    const bool csv = name.size() > 4 && name.substr(name.size() - 4) == ".csv";
+    write_file(std::filesystem::path(folder) / (csv ? name : name + ".md"), text);
+  }
+}
+
+void update_doc(const Tables& tables, const std::string& doc) {
+  std::string text = read_file(doc);
+  for (const auto& [name, table] : tables) {
+    const std::string begin = "<!-- begin generated: " + name + " -->\n";
+    const std::string end = "<!-- end generated: " + name + " -->";
+    const size_t from = text.find(begin);
+    if (from == std::string::npos) continue;
+    const size_t to = text.find(end, from);
+    if (to == std::string::npos) {
+      throw std::runtime_error(doc + ": \"" + begin + "\" has no end marker");
+    }
+    text.replace(from + begin.size(), to - from - begin.size(), table);
+  }
+  write_file(doc, text);
+}
+
+}  // namespace lamina

@@ -1,0 +1,43 @@
+// The benchmarks' tables (Markdown for docs/performance.md, CSV for the plot and for reading
+// back), made from the runs; and the writing of them.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "benchmarks/pyramid_runs.h"
+
+namespace lamina {
+
+// Which engine at which pyramid and sweeps; Box2D's sweeps are always 8 / 3.
+struct RunKey {
+  std::string engine;  // "Lamina" or "Box2D"
+  int base = 0;        // boxes in the pyramid's base
+  int iterations = 0;  // velocity sweeps per step
+
+  bool operator<(const RunKey& o) const;
+};
+
+struct Measurements {
+  std::map<RunKey, std::vector<PyramidRun>> runs;  // every repetition of every benchmark
+  std::vector<WarmStartRun> warm_starts;           // the warm-start measurements
+  std::string load_before;                         // /proc/loadavg when the runs started
+  std::string load_after;                          // and when they ended
+};
+
+// Named tables: "machine", "pyramids", "scaling", "warm_start" (Markdown), and the CSV files
+// "pyramids.csv", "scaling.csv", "warm_start.csv".
+using Tables = std::map<std::string, std::string>;
+Tables make_tables(const Measurements& measurements);
+
+// Writes every table to `folder` (created if missing), Markdown as <name>.md.
+// Throws std::runtime_error naming the file that could not be written.
+void write_tables(const Tables& tables, const std::string& folder);
+
+// Replaces, in the Markdown file `doc`, the text between "<!-- begin generated: NAME -->" and
+// "<!-- end generated: NAME -->" by table NAME, for every table the file has markers for.
+// Throws std::runtime_error for an unreadable file or unmatched markers.
+void update_doc(const Tables& tables, const std::string& doc);
+
+}  // namespace lamina
