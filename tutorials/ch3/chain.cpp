@@ -1,0 +1,193 @@
+#include "ch3/chain.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ch3/constrained_system.h"
+#include "constraints/revolute_joint.h"
+#include "harness/body_view.h"
+#include "harness/plot.h"
+
+namespace lamina::ch3 {
+namespace {
+
+constexpr int links = 4;
+const Vec2 link_half(0.25, 0.05);       // half extents of a link, in m
+constexpr double link_density = 20.0;   // kg/m²: 1 kg per link
+const Vec3 chain_pivot(0.0, 0.0, 0.0);  // the world pin, in m
+constexpr double chain_release = 1.2;   // the straight chain's angle from hanging, in rad
+const Vec3 chain_direction(std::sin(chain_release), -std::cos(chain_release), 0.0);  // unit
+constexpr int comparison_step = 30;    // the step pgs_residual.png shows
+constexpr int comparison_sweeps = 30;  // sweeps plotted
+
+using Pins = std::vector<std::pair<Anchor, Anchor>>;  // each joint's two anchors, in order
+
+// The links laid out straight from chain_pivot, chain_release from hanging.
+std::vector<RigidBody> level_links() {
+  std::vector<RigidBody> bodies;
+  for (int i = 0; i < links; ++i) {
+    const Vec3 centre = chain_pivot + (2 * i + 1) * link_half.x() * chain_direction;
+    bodies.push_back(
+        box_body(link_density, link_half.x(), link_half.y(), centre, chain_release - M_PI / 2.0));
+  }
+  return bodies;
+}
+
+// Joint i pins link i−1 (the world for i = 0) to link i at their shared end.
+Pins chain_pins(const std::vector<RigidBody>& level) {
+  Pins pins;
+  for (int i = 0; i < links; ++i) {
+    const Vec3 pin = chain_pivot + 2 * i * link_half.x() * chain_direction;
+    pins.emplace_back(anchor_at(level, i - 1, pin), anchor_at(level, i, pin));
+  }
+  return pins;
+}
+
+// C of each joint row, x then y: the components of p_b − p_a.
+std::vector<double> joint_errors(const std::vector<RigidBody>& bodies, const Pins& pins) {
+  std::vector<double> C;
+  for (const auto& [a, b] : pins) {
+    const Vec3 gap = anchor_position(bodies, b) - anchor_position(bodies, a);
+    C.push_back(gap.x());
+    C.push_back(gap.y());
+  }
+  return C;
+}
+
+System make_chain() {
+  System s;
+  s.bodies = level_links();
+  for (const auto& [a, b] : chain_pins(s.bodies)) {
+    s.constraints.push_back(std::make_unique<RevoluteJoint>(a, b));
+  }
+  return s;
+}
+
+// The same step taken twice from the same state: from last step's λ and from λ = 0.
+struct Comparison {
+  StepReport warm, cold;
+};
+
+Comparison compare_warm_and_cold(const System& s, int sweeps) {
+  Comparison c;
+  for (bool warm : {true, false}) {
+    std::vector<RigidBody> bodies = s.bodies;
+    WarmStart start = s.warm_start;
+    ConstrainedStepSettings settings = s.settings;
+    settings.warm_start = warm;
+    settings.pgs.iterations = sweeps;
+    constrained_step(bodies, s.constraints, settings, start, warm ? &c.warm : &c.cold);
+  }
+  return c;
+}
+
+class Chain : public tutorial::Scene {
+ public:
+  Chain() : s_(make_chain()), pins_(chain_pins(level_links())), trail_{tip()} {}
+
+  tutorial::SceneInfo info() const override {
+    return {"chain", 1.0 / 60.0, 91, 2, {Vec2(-3.3, -2.3), Vec2(3.3, 1.1)}};
+  }
+
+  void step() override {
+    cold_residual_ =
+        compare_warm_and_cold(s_, s_.settings.pgs.iterations).cold.solution.residuals.back();
+    s_.step(joint_errors(s_.bodies, pins_));
+    trail_.push_back(tip());
+  }
+
+  void draw(render::Frame& frame) const override {
+    frame.caption = "Ch 3 · A chain on revolute joints: J B λ = η solved by PGS (eq. 3-16, 3-24)";
+    frame.paths.push_back({trail_, tint(bluish_green, 0.6), false});
+    frame.bodies.push_back(mount(chain_pivot));
+    const render::Colour fills[] = {render::palette::sky_blue, orange, reddish_purple,
+                                    bluish_green};
+    for (int i = 0; i < links; ++i) {
+      frame.bodies.push_back(tutorial::box_view(s_.bodies[static_cast<std::size_t>(i)], link_half,
+                                                tint(fills[i], 0.45)));
+    }
+    for (const auto& [a, b] : pins_) {
+      frame.joints.push_back(
+          {planar(anchor_position(s_.bodies, a)), planar(anchor_position(s_.bodies, b))});
+    }
+    frame.panels.push_back(panel());
+    frame.legend = {{render::LegendEntry::Sample::line, tint(bluish_green, 0.6),
+                     "path of the chain's free end"}};
+    frame.legend_corner = render::Corner::bottom_left;
+  }
+
+  tutorial::Explanation explain() const override {
+    std::vector<std::string> names;
+    for (int i = 0; i < links; ++i) {
+      const std::string joint =
+          i == 0 ? "world pin – link 0"
+                 : "link " + std::to_string(i - 1) + " – link " + std::to_string(i);
+      names.push_back(joint + ", x row: C = x̂·(p_b − p_a)");
+      names.push_back(joint + ", y row: C = ŷ·(p_b − p_a)");
+    }
+    return explain_system(s_, "Chain", names);
+  }
+
+  // pgs_residual.png: a fresh chain to comparison_step, then that step from both guesses.
+  void write_data(const std::filesystem::path& folder) const override {
+    System s = make_chain();
+    const Pins pins = chain_pins(level_links());
+    for (int i = 1; i < comparison_step; ++i) s.step(joint_errors(s.bodies, pins));
+    const Comparison c = compare_warm_and_cold(s, comparison_sweeps);
+    std::vector<std::vector<double>> rows;
+    for (int k = 0; k < comparison_sweeps; ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      rows.push_back({k + 1.0, c.warm.solution.residuals[i], c.cold.solution.residuals[i]});
+    }
+    tutorial::write_plot(
+        folder, {"pgs_residual",
+                 "Chain of 4 links, step 30 (t = 0.5 s): PGS residual per sweep (eq. 3-23, 3-24)",
+                 "sweep",
+                 "‖W‖ (m/s²), log scale",
+                 {{"from last step's λ (warm start)", bluish_green, false},
+                  {"from λ = 0", vermillion, false}},
+                 rows,
+                 "top right",
+                 true});
+  }
+
+ private:
+  // The free end of the last link.
+  Vec2 tip() const {
+    const RigidBody& last = s_.bodies.back();
+    return planar(last.x + last.rotation * Vec3(link_half.x(), 0.0, 0.0));
+  }
+
+  render::Panel panel() const {
+    double worst_gap = 0.0;
+    const std::vector<double> C = joint_errors(s_.bodies, pins_);
+    for (std::size_t k = 0; k < C.size(); k += 2)
+      worst_gap = std::max(worst_gap, std::hypot(C[k], C[k + 1]));
+    render::Panel panel;
+    panel.corner = render::Corner::top_left;
+    panel.title = "PGS on the chain (4 joints, 8 rows)";
+    panel.lines = {"J: 8 × 24 (3-8)   J B: 8 × 8 (3-16)",
+                   "widest joint gap |p_b − p_a| = " + fixed(worst_gap, 4) + " m"};
+    if (s_.stepped) {
+      const int sweeps = s_.report.solution.iterations;
+      panel.lines.push_back("‖W‖ after " + std::to_string(sweeps) + " sweeps (3-23, 3-24):");
+      panel.lines.push_back("  from last step's λ  " + scientific(s_.last_residual()) + " m/s²");
+      panel.lines.push_back("  from λ = 0          " + scientific(cold_residual_) + " m/s²");
+    }
+    return panel;
+  }
+
+  System s_;
+  Pins pins_;                   // each joint's anchors, the world pin first
+  std::vector<Vec2> trail_;     // the free end's positions, one per step, in m
+  double cold_residual_ = 0.0;  // ‖W‖ of the last step had PGS started from λ = 0, in m/s²
+};
+
+}  // namespace
+
+tutorial::SceneFactory chain_scene() { return tutorial::scene<Chain>(); }
+
+}  // namespace lamina::ch3

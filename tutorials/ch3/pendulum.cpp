@@ -1,0 +1,156 @@
+#include "ch3/pendulum.h"
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "ch3/constrained_system.h"
+#include "constraints/distance_constraint.h"
+#include "harness/plot.h"
+
+namespace lamina::ch3 {
+namespace {
+
+constexpr double rod_length = 1.5;             // L, in m
+constexpr double bob_radius = 0.15;            // in m
+constexpr double release_angle = 1.0;          // θ0 from hanging, in rad
+constexpr double pendulum_dt = 1.0 / 30.0;     // Δt, in s (large on purpose: the drift shows)
+constexpr double pendulum_force_scale = 0.05;  // m of arrow per N
+
+struct Pendulum {
+  const char* title;
+  double beta;  // β of eq. 3-14
+  render::Colour colour;
+  Vec3 pivot;  // the rod's world end, in m
+  System s;
+  std::vector<Vec2> trail;
+
+  Pendulum(const char* title_, double beta_, render::Colour colour_, const Vec3& pivot_)
+      : title(title_), beta(beta_), colour(colour_), pivot(pivot_) {
+    const Vec3 bob =
+        pivot + rod_length * Vec3(std::sin(release_angle), -std::cos(release_angle), 0);
+    const double density = 1.0 / (M_PI * bob_radius * bob_radius);  // m = 1 kg
+    s.bodies.push_back(disc_body(density, bob_radius, bob));
+    s.constraints.push_back(std::make_unique<DistanceConstraint>(
+        Anchor{world, pivot}, Anchor{0, Vec3::Zero()}, rod_length));
+    s.settings.dt = pendulum_dt;
+    s.settings.beta = beta;
+    trail.push_back(planar(bob));
+  }
+  double error() const { return (s.bodies[0].x - pivot).norm() - rod_length; }  // C = |d| − L
+};
+
+class PendulumPair : public tutorial::Scene {
+ public:
+  PendulumPair()
+      : runs_{Pendulum("β = 0: no bias", 0.0, vermillion, Vec3(-2.7, 0.6, 0.0)),
+              Pendulum("β = 0.2 (eq. 3-14)", 0.2, bluish_green, Vec3(2.7, 0.6, 0.0))} {
+    record();
+  }
+
+  tutorial::SceneInfo info() const override {
+    return {"pendulum", pendulum_dt, 91, 2, {Vec2(-5.4, -2.6), Vec2(5.4, 3.0)}};
+  }
+
+  void step() override {
+    for (Pendulum& run : runs_) {
+      run.s.step({run.error()});
+      run.trail.push_back(planar(run.s.bodies[0].x));
+    }
+    ++step_;
+    record();
+  }
+
+  void draw(render::Frame& frame) const override {
+    frame.caption =
+        "Ch 3 · A pendulum on a rod: C = |p − pivot| − L drifts unless β > 0 (eq. 3-14)";
+    frame.force_scale = pendulum_force_scale;
+    for (const Pendulum& run : runs_) {
+      const RigidBody& bob = run.s.bodies[0];
+      frame.paths.push_back({circle_arc(run.pivot), grey, true});
+      frame.paths.push_back({run.trail, tint(run.colour, 0.6), false});
+      frame.bodies.push_back(mount(run.pivot));
+      frame.joints.push_back({planar(run.pivot), planar(bob.x)});
+      render::Body view;
+      view.shape = render::Body::Shape::circle;
+      view.centre = planar(bob.x);
+      view.angle = planar_angle(bob.q);
+      view.radius = bob_radius;
+      view.fill = tint(run.colour, 0.45);
+      view.velocity = planar(bob.v);
+      frame.bodies.push_back(view);
+      if (run.s.stepped) {
+        const Vec2 force = run.s.constraint_force(0).head<2>();
+        frame.arrows.push_back({planar(bob.x), planar(bob.x) + pendulum_force_scale * force, blue,
+                                "Jᵀλ", render::Overlay::forces});
+      }
+      frame.panels.push_back(panel(run));
+    }
+    frame.legend = {
+        {render::LegendEntry::Sample::dashed_line, grey, "C = 0: the circle |p − pivot| = L"},
+        {render::LegendEntry::Sample::arrow, blue, "rod force F_c = Jᵀλ (3-11)"}};
+    frame.legend_corner = render::Corner::bottom_left;
+  }
+
+  tutorial::Explanation explain() const override {
+    tutorial::Explanation e;
+    for (const Pendulum& run : runs_) {
+      tutorial::Explanation one = explain_system(run.s, std::string("Pendulum, ") + run.title,
+                                                 {"rod, C = |p_b − p_a| − L"});
+      e.insert(e.end(), one.begin(), one.end());
+    }
+    return e;
+  }
+
+  void write_data(const std::filesystem::path& folder) const override {
+    tutorial::write_plot(
+        folder,
+        {"pendulum_drift",
+         "Pendulum on a rod, L = 1.5 m, Δt = 1/30 s: drift |C| = ||p − pivot| − L|",
+         "t (s)",
+         "|C| (m)",
+         {{runs_[0].title, runs_[0].colour, false}, {runs_[1].title, runs_[1].colour, false}},
+         drift_rows_});
+  }
+
+ private:
+  void record() {
+    drift_rows_.push_back(
+        {step_ * pendulum_dt, std::abs(runs_[0].error()), std::abs(runs_[1].error())});
+  }
+
+  static std::vector<Vec2> circle_arc(const Vec3& pivot) {
+    std::vector<Vec2> points;
+    for (int i = -40; i <= 40; ++i) {
+      const double a = 1.3 * i / 40.0;
+      points.push_back(planar(pivot) + rod_length * Vec2(std::sin(a), -std::cos(a)));
+    }
+    return points;
+  }
+
+  render::Panel panel(const Pendulum& run) const {
+    render::Panel panel;
+    panel.corner = &run == &runs_[0] ? render::Corner::top_left : render::Corner::top_right;
+    panel.title = std::string("Pendulum, ") + run.title;
+    panel.title_colour = run.colour;
+    panel.lines = {"L = 1.5 m   m = 1 kg   θ0 = 1 rad",
+                   "C = |p − pivot| − L = " + fixed(run.error(), 4) + " m"};
+    if (run.s.stepped) {
+      const StepReport& r = run.s.report;
+      panel.lines.push_back("ζ = −βC/Δt = " + fixed(r.mlcp.rows[0].zeta, 4) + " m/s  (3-14)");
+      panel.lines.push_back("λ = " + fixed(r.solution.lambda[0], 2) + " N (rod tension −λ)");
+    }
+    return panel;
+  }
+
+  std::array<Pendulum, 2> runs_;
+  long step_ = 0;
+  std::vector<std::vector<double>> drift_rows_;  // t, |C| with β = 0, |C| with β = 0.2
+};
+
+}  // namespace
+
+tutorial::SceneFactory pendulum_scene() { return tutorial::scene<PendulumPair>(); }
+
+}  // namespace lamina::ch3
