@@ -11,6 +11,10 @@ namespace {
 template <int N>
 void pack(const ConstraintRow& row, const RowTerms<N>& terms, SweepRow<N>& packed) {
   assert(row.Jmap[0] != row.Jmap[1]);  // a row's two blocks are on two bodies
+  // A row moves a body, so d_i = J_i M⁻¹ J_iᵀ > 0 and 1/d_i is finite. A row on static bodies
+  // alone would give 0 · ∞ = NaN in the sweep; the World refuses such joints (add_joint) and
+  // skips pairs of static bodies.
+  assert(terms.d > 0.0);
   packed.map = row.Jmap;
   packed.eta = terms.eta;
   packed.inverse_d = 1.0 / terms.d;

@@ -25,7 +25,8 @@ void require_at_least(double value, double low, const char* name) {
 void validate(const WorldSettings& s) {
   require(s.gravity.allFinite() && s.gravity.z() == 0.0, "gravity must be finite and in the plane");
   require(std::isfinite(s.dt) && s.dt > 0.0, "dt must be finite and > 0, got " + std::to_string(s.dt));
-  require(s.iterations >= 1, "iterations must be ≥ 1, got " + std::to_string(s.iterations));
+  // 0 sweeps is allowed: λ stays at its warm start (scene_limits.h)
+  require(s.iterations >= 0, "iterations must be ≥ 0, got " + std::to_string(s.iterations));
   require(s.position_iterations >= 1,
           "position_iterations must be ≥ 1, got " + std::to_string(s.position_iterations));
   require(std::isfinite(s.contact.beta) && s.contact.beta >= 0.0 && s.contact.beta <= 1.0,
@@ -42,6 +43,13 @@ void validate(const WorldSettings& s) {
 bool is_planar(const RigidBody& b) {
   return b.x.z() == 0.0 && b.q.x() == 0.0 && b.q.y() == 0.0 && b.v.z() == 0.0 &&
          b.angular_velocity.x() == 0.0 && b.angular_velocity.y() == 0.0;
+}
+
+// Whether a row acts on a body that moves. A row on static bodies (or the world) alone has
+// d = J M⁻¹ Jᵀ = 0, and PGS divides by d (eq. 3-24's sweep).
+bool moves_a_body(const ConstraintRow& row, const std::vector<RigidBody>& bodies) {
+  return std::any_of(row.Jmap.begin(), row.Jmap.end(),
+                     [&](int b) { return b >= 0 && !bodies[b].is_static(); });
 }
 
 // λ kept in a std::vector, seen as an Eigen vector without a copy.
@@ -77,8 +85,11 @@ bool nothing_to_push(const std::vector<double>& eta) {
 World::World(const WorldSettings& settings) : settings_(settings) { validate(settings_); }
 
 int World::add_body(const RigidBody& body, const Shape& shape, const Material& material) {
-  require(is_planar(body), "body " + std::to_string(bodies_.size()) +
-                               " leaves the x–y plane (x_z, v_z, ω_x, ω_y and the tilt must be 0)");
+  const std::string name = "body " + std::to_string(bodies_.size());
+  require(body.has_finite_state(),
+          name + " has a position, orientation or velocity that is not finite");
+  require(is_planar(body),
+          name + " leaves the x–y plane (x_z, v_z, ω_x, ω_y and the tilt must be 0)");
   // The factories check the sizes; a hand-made Shape is checked the same way.
   const Shape checked = shape.is_box() ? Shape::box(shape.half_extents.x(), shape.half_extents.y())
                                        : Shape::circle(shape.radius);
@@ -107,6 +118,10 @@ int World::add_circle(double density, double radius, const Vec3& x, const Materi
 void World::add_joint(std::unique_ptr<Constraint> joint) {
   std::vector<ConstraintRow> rows;
   joint->write_rows(bodies_, settings_.dt, settings_.contact.beta, rows);
+  require(std::all_of(rows.begin(), rows.end(),
+                      [&](const ConstraintRow& row) { return moves_a_body(row, bodies_); }),
+          "joint " + std::to_string(joints_.size()) +
+              " joins only static bodies: it can move nothing");
   for (const ConstraintRow& row : rows) {
     if (row.is_one_body()) continue;
     const BodyPair pair{std::min(row.Jmap[0], row.Jmap[1]), std::max(row.Jmap[0], row.Jmap[1])};

@@ -30,7 +30,7 @@ namespace lamina {
 struct WorldSettings {
   Vec3 gravity = Vec3(0.0, -9.8, 0.0);  // g, in m/s²; y is up (the text's chapter 5 has z up)
   double dt = 1.0 / 60.0;               // Δt, in s
-  int iterations = 10;                  // PGS sweeps of the velocity MLCP
+  int iterations = 10;                  // PGS sweeps of the velocity MLCP; 0 keeps the warm start
   int position_iterations = 3;          // PGS sweeps of the split-impulse position MLCP (Box2D: 3)
   ContactSettings contact;              // β (the joints' too), slop, restitution, correction
   CacheSettings cache;                  // the contact cache on or off, and its margins
@@ -42,8 +42,8 @@ class World {
   explicit World(const WorldSettings& settings = WorldSettings());
 
   // Adds a body with its shape and material and returns its index. Throws
-  // std::invalid_argument if the body leaves the x–y plane (x_z, v_z, ω_x, ω_y ≠ 0 or a tilt
-  // out of the plane), or the shape or material is out of range.
+  // std::invalid_argument if the body's state is not finite or leaves the x–y plane (x_z, v_z,
+  // ω_x, ω_y ≠ 0 or a tilt out of the plane), or the shape or material is out of range.
   int add_body(const RigidBody& body, const Shape& shape, const Material& material = Material());
   // A dynamic box of the given density (kg/m², mass = density × area), half extents, centre, angle.
   int add_box(double density, double half_x, double half_y, const Vec3& x, double angle = 0.0,
@@ -56,6 +56,7 @@ class World {
                  const Material& material = Material());
   // Adds a joint (engine/constraints); its rows follow the contact rows every step. Two bodies
   // joined by a joint do not collide with each other (Box2D's default, collideConnected false).
+  // Throws std::invalid_argument for a joint whose rows act on static bodies only (d = 0).
   void add_joint(std::unique_ptr<Constraint> joint);
 
   // Advances the world by Δt. The second form also fills `report` with what was solved.

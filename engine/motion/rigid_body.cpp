@@ -80,6 +80,10 @@ void RigidBody::update_derived() {
 
 Mat3 RigidBody::inertia_world() const { return world_inertia(rotation, inertia_body); }
 
+bool RigidBody::has_finite_state() const {
+  return x.allFinite() && q.coeffs().allFinite() && v.allFinite() && angular_velocity.allFinite();
+}
+
 Quat planar_orientation(double angle) {
   return quaternion_from_axis_angle(Vec3::UnitZ(), angle);
 }

@@ -40,6 +40,8 @@ struct RigidBody {
   // I = R I0 Rᵀ (eq. 1-37).
   Mat3 inertia_world() const;
   bool is_static() const { return inverse_mass == 0.0; }
+  // True while x, q, v and ω are all finite numbers: a step that breaks this has diverged.
+  bool has_finite_state() const;
 };
 
 // The planar orientation of angle θ about z (eq. 1-19 with d = z).

@@ -4,18 +4,19 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "scene/json_layout.h"
+#include "scene/scene_limits.h"
 
 namespace lamina {
 namespace {
 
 using nlohmann::json;
-
-constexpr double max_friction = 10.0;  // μ beyond this is surely a typing error
+using scene_limits::Range;
 
 // A number in its shortest form that reads back to the same double, without a trailing ".0".
 std::string shortest(double value) {
@@ -56,20 +57,31 @@ class Reader {
     return value;
   }
 
-  double in_range(const json& j, const std::string& path, double lo, double hi) const {
+  double in_range(const json& j, const std::string& path, Range<double> range) const {
     const double value = number(j, path);
-    if (value < lo || value > hi) {
-      fail(path, "must be in [" + shortest(lo) + ", " + shortest(hi) + "], got " + shortest(value));
+    if (value < range.low || value > range.high) {
+      fail(path, "must be in [" + shortest(range.low) + ", " + shortest(range.high) + "], got " +
+                     shortest(value));
     }
     return value;
   }
 
-  int count(const json& j, const std::string& path, int lo, int hi) const {
-    if (!j.is_number_integer()) fail(path, "must be a whole number, got " + j.dump());
+  // A size or density: "must be positive" for zero or less, then the range.
+  double positive_in(const json& j, const std::string& path, Range<double> range) const {
+    positive(j, path);
+    return in_range(j, path, range);
+  }
+
+  int count(const json& j, const std::string& path, Range<int> range) const {
+    if (!j.is_number_integer()) {
+      // An array or object is named by its type: dumping a deeply nested one overflows the stack.
+      const std::string got = j.is_structured() ? std::string(j.type_name()) : j.dump();
+      fail(path, "must be a whole number, got " + got);
+    }
     const auto value = j.get<long long>();
-    if (value < lo || value > hi) {
-      fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
-                     std::to_string(value));
+    if (value < range.low || value > range.high) {
+      fail(path, "must be in [" + std::to_string(range.low) + ", " + std::to_string(range.high) +
+                     "], got " + std::to_string(value));
     }
     return static_cast<int>(value);
   }
@@ -92,9 +104,10 @@ class Reader {
     return j;
   }
 
-  Vec2d vec2(const json& j, const std::string& path) const {
+  // A vector whose components each lie in the range.
+  Vec2d vec2(const json& j, const std::string& path, Range<double> range) const {
     array(j, path, 2);
-    return {number(j[0], at(path, 0)), number(j[1], at(path, 1))};
+    return {in_range(j[0], at(path, 0), range), in_range(j[1], at(path, 1), range)};
   }
 
   const json& required(const json& obj, const std::string& path, const char* key,
@@ -144,11 +157,13 @@ ShapeDescription read_shape(const Reader& r, const json& j, const std::string& p
     shape.type = ShapeType::box;
     const std::string hp = Reader::join(path, "half_extents");
     const json& he = r.array(r.required(j, path, "half_extents"), hp, 2);
-    shape.half_extents = {r.positive(he[0], Reader::at(hp, 0)), r.positive(he[1], Reader::at(hp, 1))};
+    shape.half_extents = {r.positive_in(he[0], Reader::at(hp, 0), scene_limits::size),
+                          r.positive_in(he[1], Reader::at(hp, 1), scene_limits::size)};
   } else if (type == "circle") {
     r.forbid(j, path, "half_extents", "a circle has no half extents (use radius)");
     shape.type = ShapeType::circle;
-    shape.radius = r.positive(r.required(j, path, "radius"), Reader::join(path, "radius"));
+    shape.radius = r.positive_in(r.required(j, path, "radius"), Reader::join(path, "radius"),
+                                 scene_limits::size);
   } else {
     r.fail(type_path, "must be \"box\" or \"circle\", got \"" + type + "\"");
   }
@@ -162,19 +177,22 @@ BodyDescription read_body(const Reader& r, const json& j, const std::string& pat
   body.name = r.text(r.required(j, path, "name"), Reader::join(path, "name"));
   if (body.name.empty()) r.fail(Reader::join(path, "name"), "must not be empty");
   body.shape = read_shape(r, r.required(j, path, "shape"), Reader::join(path, "shape"));
-  optional(r, j, path, "position", body.position, &Reader::vec2);
-  optional(r, j, path, "angle", body.angle, &Reader::number);
+  optional(r, j, path, "position", body.position, &Reader::vec2, scene_limits::coordinate);
+  optional(r, j, path, "angle", body.angle, &Reader::in_range, scene_limits::angle);
   optional(r, j, path, "static", body.is_static, &Reader::boolean);
-  optional(r, j, path, "density", body.density, &Reader::positive);
-  optional(r, j, path, "friction", body.friction, &Reader::in_range, 0.0, max_friction);
-  optional(r, j, path, "restitution", body.restitution, &Reader::in_range, 0.0, 1.0);
-  optional(r, j, path, "velocity", body.velocity, &Reader::vec2);
-  optional(r, j, path, "angular_velocity", body.angular_velocity, &Reader::number);
+  optional(r, j, path, "density", body.density, &Reader::positive_in, scene_limits::density);
+  optional(r, j, path, "friction", body.friction, &Reader::in_range, scene_limits::friction);
+  optional(r, j, path, "restitution", body.restitution, &Reader::in_range,
+           scene_limits::restitution);
+  optional(r, j, path, "velocity", body.velocity, &Reader::vec2, scene_limits::speed);
+  optional(r, j, path, "angular_velocity", body.angular_velocity, &Reader::in_range,
+           scene_limits::angular_speed);
   return body;
 }
 
+// `is_static` holds every body of the scene by name: whether it is static.
 JointDescription read_joint(const Reader& r, const json& j, const std::string& path,
-                            const std::set<std::string>& body_names) {
+                            const std::map<std::string, bool>& is_static) {
   r.expect_object(j, path, {"type", "bodies", "anchor", "anchors"});
   JointDescription joint;
   const std::string type_path = Reader::join(path, "type");
@@ -184,23 +202,35 @@ JointDescription read_joint(const Reader& r, const json& j, const std::string& p
   const json& names = r.array(r.required(j, path, "bodies"), bp, 2);
   for (size_t k = 0; k < 2; ++k) {
     joint.bodies[k] = r.text(names[k], Reader::at(bp, k));
-    if (body_names.count(joint.bodies[k]) == 0) {
+    if (is_static.count(joint.bodies[k]) == 0) {
       r.fail(Reader::at(bp, k), "no body is named \"" + joint.bodies[k] + "\"");
     }
   }
   if (joint.bodies[0] == joint.bodies[1]) {
     r.fail(bp, "a joint needs two different bodies, got \"" + joint.bodies[0] + "\" twice");
   }
+  // Between two static bodies a joint's rows move nothing: d = J M⁻¹ Jᵀ = 0, and PGS divides by d.
+  if (is_static.at(joint.bodies[0]) && is_static.at(joint.bodies[1])) {
+    r.fail(bp, "a joint needs a body that moves, got the static bodies \"" + joint.bodies[0] +
+                   "\" and \"" + joint.bodies[1] + "\"");
+  }
   if (type == "revolute") {
     r.forbid(j, path, "anchors", "a revolute joint has one world anchor (use anchor)");
     joint.type = JointType::revolute;
-    joint.anchor = r.vec2(r.required(j, path, "anchor"), Reader::join(path, "anchor"));
+    joint.anchor = r.vec2(r.required(j, path, "anchor"), Reader::join(path, "anchor"),
+                          scene_limits::coordinate);
   } else if (type == "distance") {
     r.forbid(j, path, "anchor", "a distance joint has two anchors (use anchors)");
     joint.type = JointType::distance;
     const std::string ap = Reader::join(path, "anchors");
     const json& anchors = r.array(r.required(j, path, "anchors"), ap, 2);
-    joint.anchors = {r.vec2(anchors[0], Reader::at(ap, 0)), r.vec2(anchors[1], Reader::at(ap, 1))};
+    joint.anchors = {r.vec2(anchors[0], Reader::at(ap, 0), scene_limits::coordinate),
+                     r.vec2(anchors[1], Reader::at(ap, 1), scene_limits::coordinate)};
+    // A rod of length 0 has no direction u = d/|d| to hold; DistanceConstraint refuses it too
+    if (joint.anchors[0] == joint.anchors[1]) {
+      r.fail(ap, "the rod's two ends coincide, so it has no length "
+                 "(a revolute joint pins two bodies)");
+    }
   } else {
     r.fail(type_path, "must be \"revolute\" or \"distance\", got \"" + type + "\"");
   }
@@ -213,23 +243,24 @@ Scene read_scene(const Reader& r, const json& j) {
   Scene scene;
   optional(r, j, "", "name", scene.name, &Reader::text);
   optional(r, j, "", "description", scene.description, &Reader::text);
-  optional(r, j, "", "gravity", scene.gravity, &Reader::vec2);
-  optional(r, j, "", "dt", scene.dt, &Reader::in_range, 1e-5, 1.0);
-  optional(r, j, "", "iterations", scene.iterations, &Reader::count, 0, 10000);
-  optional(r, j, "", "beta", scene.beta, &Reader::in_range, 0.0, 1.0);
-  optional(r, j, "", "steps", scene.steps, &Reader::count, 0, 10000000);
+  optional(r, j, "", "gravity", scene.gravity, &Reader::vec2, scene_limits::gravity);
+  optional(r, j, "", "dt", scene.dt, &Reader::in_range, scene_limits::dt);
+  optional(r, j, "", "iterations", scene.iterations, &Reader::count, scene_limits::iterations);
+  optional(r, j, "", "beta", scene.beta, &Reader::in_range, scene_limits::beta);
+  optional(r, j, "", "steps", scene.steps, &Reader::count, scene_limits::steps);
   const json& bodies = r.array(r.required(j, "", "bodies"), "bodies", 0);
-  std::set<std::string> names;
+  std::map<std::string, bool> is_static;  // every body so far, by name
   for (size_t i = 0; i < bodies.size(); ++i) {
     scene.bodies.push_back(read_body(r, bodies[i], Reader::at("bodies", i)));
-    if (!names.insert(scene.bodies.back().name).second) {
-      r.fail(Reader::at("bodies", i) + ".name", "duplicate body name \"" + scene.bodies.back().name + "\"");
+    const BodyDescription& body = scene.bodies.back();
+    if (!is_static.emplace(body.name, body.is_static).second) {
+      r.fail(Reader::at("bodies", i) + ".name", "duplicate body name \"" + body.name + "\"");
     }
   }
   if (j.contains("joints")) {
     const json& joints = r.array(j.at("joints"), "joints", 0);
     for (size_t i = 0; i < joints.size(); ++i) {
-      scene.joints.push_back(read_joint(r, joints[i], Reader::at("joints", i), names));
+      scene.joints.push_back(read_joint(r, joints[i], Reader::at("joints", i), is_static));
     }
   }
   return scene;
