@@ -1,6 +1,6 @@
 // An output file that is complete or absent: written under a temporary name beside it and
-// renamed into place when complete (atomic on one file system), so a reader never sees half
-// a line, and a failed or interrupted run leaves nothing at the path.
+// renamed into place by commit() (atomic on one file system), so a reader never sees half a
+// line, and a run that fails or dies before commit() leaves nothing at the path.
 #pragma once
 
 #include <filesystem>

@@ -1,6 +1,8 @@
 // Writing a trace as the run goes: JSON Lines (trace_json.h), or CSV (trace_csv.h) when the
 // path ends in ".csv": bodies in FILE.csv, contacts in FILE.contacts.csv. Nothing appears at
-// the paths until finish(); a run that stops early leaves no trace file (output_file.h).
+// the paths until finish(), which puts the steps written so far in place, whole: at the end of
+// a run, or of one stopped early that keeps what it has (a diverged step, Ctrl-C). A writer
+// destroyed unfinished, as when a write fails, leaves no trace file (output_file.h).
 #pragma once
 
 #include <filesystem>
@@ -19,7 +21,7 @@ class TraceWriter {
 
   // Appends one step. Throws OutputFileError when the disk refuses it.
   void write(const TraceStep& step);
-  // Puts the complete file(s) in place. Throws OutputFileError on failure.
+  // Puts the file(s) in place, holding every step written. Throws OutputFileError on failure.
   void finish();
 
   // The file(s) the trace goes to: the path, and for CSV the contacts file after it.

@@ -6,16 +6,24 @@
 
 #include "harness/options.h"
 #include "lamina/exit_codes.h"
+#include "scene/scene_limits.h"
 
 namespace lamina::cli {
 namespace {
 
-constexpr long most_steps = 10000000;  // as a scene file's `steps` (docs/scene-format.md)
+// The ranges of a scene file's dt, iterations, beta and steps (scene_limits.h), as CLI11 checks.
+template <typename T>
+CLI::Range range_of(scene_limits::Range<T> range) {
+  return CLI::Range(range.low, range.high);
+}
 
 const char* const exit_codes =
     "Exit codes: 0 ok; 2 bad input (a scene file, option value or output path: one line on "
     "standard error names it, and nothing is written); 1 internal failure (a bug, or no OpenGL "
-    "for --frames).\nDocumentation: docs/lamina-command.md, docs/scene-format.md.";
+    "for --frames); 3 the run diverged (a body's state is no longer finite: one line names the "
+    "body and the step, the trace and frames hold every step before); 130 interrupted by Ctrl-C "
+    "(143 by SIGTERM: the trace and frames hold every step taken).\n"
+    "Documentation: docs/lamina-command.md, docs/scene-format.md.";
 
 const char* const scene_help =
     "a scene file (JSON, see docs/scene-format.md), or the name of a built-in scene "
@@ -38,13 +46,13 @@ CLI::Option* add_optional(CLI::App& app, const std::string& name, std::optional<
 void add_run_options(CLI::App& run, RunOptions& o, RunText& text) {
   run.add_option("SCENE", o.scene, scene_help)->required();
   add_optional(run, "--steps", o.steps, "time steps to take (default: the scene's `steps`)")
-      ->type_name("N")->check(CLI::Range(0L, most_steps));
+      ->type_name("N")->check(range_of(scene_limits::steps));
   add_optional(run, "--dt", o.dt, "the time step Δt in s (default: the scene's `dt`)")
-      ->type_name("S")->check(CLI::Range(1e-5, 1.0));
+      ->type_name("S")->check(range_of(scene_limits::dt));
   add_optional(run, "--iterations", o.iterations, "PGS sweeps per step (default: the scene's)")
-      ->type_name("K")->check(CLI::Range(0, 10000));
+      ->type_name("K")->check(range_of(scene_limits::iterations));
   add_optional(run, "--beta", o.beta, "β of the position bias, eq. 3-14 and 4-4 (default: the scene's)")
-      ->type_name("B")->check(CLI::Range(0.0, 1.0));
+      ->type_name("B")->check(range_of(scene_limits::beta));
   run.add_flag("--no-cache", o.no_cache, "solve without the contact cache (no warm start, Fig 4-2..4-5)");
   auto* trace = add_optional(run, "--trace", o.trace,
                              "write every step to FILE: JSON Lines, or CSV when FILE ends in .csv "
@@ -61,7 +69,7 @@ void add_run_options(CLI::App& run, RunOptions& o, RunText& text) {
       ->type_name("LIST")->capture_default_str()->needs(frames);
   auto* explain = add_optional(run, "--explain", o.explain, "print what the engine computed at "
                                "step STEP, with equation numbers, and stop; writes no file")
-                      ->type_name("STEP")->check(CLI::Range(0L, most_steps))
+                      ->type_name("STEP")->check(range_of(scene_limits::steps))
                       ->excludes(trace)->excludes(frames);
   run.add_option("--explain-format", text.explain_format, "text or json")
       ->type_name("FORMAT")->capture_default_str()->check(CLI::IsMember({"text", "json"}))->needs(explain);

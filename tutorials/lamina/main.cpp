@@ -1,13 +1,18 @@
 // lamina: run, list, show and check scenes (docs/lamina-command.md).
 //
 // Every failure is one line on standard error, "lamina: <what, where>", and its exit code says
-// whose it is: 2 for input the user can fix, 1 for anything else.
+// what happened: 2 for input the user can fix, 3 for a run that diverged, 128 + the signal for a
+// run stopped by Ctrl-C or SIGTERM, 1 for anything else.
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 
 #include "lamina/command_line.h"
 #include "lamina/exit_codes.h"
 #include "lamina/scene_commands.h"
+#include "lamina/signals.h"
 #include "render/safe_file.h"
 #include "scene/output_file.h"
 #include "scene/scene_json.h"
@@ -25,7 +30,16 @@ void execute(const Command& c) {
   }
 }
 
-int failed(const std::exception& e, ExitCode code) {
+// What went to standard output reached it (not a full disk, not past `ulimit -f`).
+void flush_standard_output() {
+  std::cout.flush();
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !std::cout) {
+    throw lamina::OutputFileError(std::string("cannot write standard output: ") +
+                                  std::strerror(errno));
+  }
+}
+
+int failed(const std::exception& e, int code) {
   std::cerr << "lamina: " << e.what() << '\n';
   return code;
 }
@@ -33,11 +47,15 @@ int failed(const std::exception& e, ExitCode code) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  ignore_file_size_signal();
   const ParsedCommand parsed = parse_command_line(argc, argv);
   if (!parsed.command) return parsed.exit_code;
   try {
     execute(*parsed.command);
+    flush_standard_output();
     return exit_ok;
+  } catch (const RunStopped& e) {
+    return failed(e, e.exit_code());
   } catch (const lamina::SceneError& e) {
     return failed(e, exit_bad_input);
   } catch (const InputError& e) {

@@ -7,6 +7,7 @@
 
 #include "render/style.h"
 #include "render/overlay.h"
+#include "scene/scene.h"
 
 namespace lamina::cli {
 
@@ -27,7 +28,12 @@ struct RunOptions {
 };
 
 // Runs it; prints one summary line on standard output (--explain: the step instead).
-// Throws SceneError, InputError or OutputFileError for bad input, having written nothing.
+// Throws SceneError, InputError or OutputFileError for bad input, having written nothing, and
+// RunStopped when the run diverges or SIGINT/SIGTERM stops it, having put the trace of the
+// steps before in place (its message says what was kept).
 void run_scene(const RunOptions& options);
+// The same with options.scene already loaded as `scene` (messages still name options.scene):
+// tests run scenes through it that no scene file may hold.
+void run_scene(Scene scene, const RunOptions& options);
 
 }  // namespace lamina::cli

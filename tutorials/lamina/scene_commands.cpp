@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "lamina/scene_source.h"
 #include "lamina/simulation.h"
@@ -23,13 +24,22 @@ void list_scenes() {
               "the pyramid with N boxes in its base (pyramid is pyramid:20)");
 }
 
+namespace {
+
+// "1 joint", "3 joints".
+std::string counted(std::size_t count, const char* one, const char* many) {
+  return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
+}  // namespace
+
 void show_scene(const std::string& source) { std::cout << scene_to_json(load_scene(source)); }
 
 void check_scene(const std::string& source) {
   const Scene scene = load_scene(source);
   checked_world(scene, world_settings(scene), source);
-  std::cout << source << ": ok, " << scene.bodies.size() << " bodies, " << scene.joints.size()
-            << " joints\n";
+  std::cout << source << ": ok, " << counted(scene.bodies.size(), "body", "bodies") << ", "
+            << counted(scene.joints.size(), "joint", "joints") << "\n";
 }
 
 }  // namespace lamina::cli

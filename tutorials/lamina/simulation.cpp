@@ -1,10 +1,32 @@
 #include "lamina/simulation.h"
 
 #include "lamina/exit_codes.h"
+#include "lamina/signals.h"
 #include "scene/scene_world.h"
+#include "scene/shortest_number.h"
 #include "scene/trace.h"
 
 namespace lamina::cli {
+namespace {
+
+// "(x = (nan, 0.5), θ = 0.1, v = (inf, -2.0), ω = 0.0)": the planar state, as in a trace.
+std::string planar_state(const RigidBody& body) {
+  std::string text = "(x = (";
+  append_shortest(text, body.x.x());
+  text += ", ";
+  append_shortest(text, body.x.y());
+  text += "), θ = ";
+  append_shortest(text, planar_angle(body.q));
+  text += ", v = (";
+  append_shortest(text, body.v.x());
+  text += ", ";
+  append_shortest(text, body.v.y());
+  text += "), ω = ";
+  append_shortest(text, body.angular_velocity.z());
+  return text + ")";
+}
+
+}  // namespace
 
 World checked_world(const Scene& scene, const WorldSettings& settings, const std::string& origin) {
   try {
@@ -14,18 +36,41 @@ World checked_world(const Scene& scene, const WorldSettings& settings, const std
   }
 }
 
-Simulation::Simulation(Scene scene, const WorldSettings& settings, const std::string& origin)
-    : scene_(std::move(scene)), world_(checked_world(scene_, settings, origin)) {}
+std::optional<std::size_t> first_non_finite_body(const World& world) {
+  const std::vector<RigidBody>& bodies = world.bodies();
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies[i].has_finite_state()) return i;
+  }
+  return std::nullopt;
+}
+
+Simulation::Simulation(Scene scene, const WorldSettings& settings, std::string origin)
+    : scene_(std::move(scene)),
+      origin_(std::move(origin)),
+      world_(checked_world(scene_, settings, origin_)) {}
 
 void Simulation::step() {
+  if (const int signal = stop_signal()) {
+    throw stopped_by(signal, origin_, "after step " + std::to_string(steps_taken_));
+  }
   if (keep_reports_) {
     world_.step(report_);
   } else {
     world_.step();
   }
+  throw_if_diverged();
   ++steps_taken_;
   if (trace_ != nullptr) trace_->write(trace_step(scene_, world_, steps_taken_));
   if (progress_ != nullptr) progress_->advance();
+}
+
+void Simulation::throw_if_diverged() const {
+  const std::optional<std::size_t> body = first_non_finite_body(world_);
+  if (!body) return;
+  throw RunStopped(origin_ + ": step " + std::to_string(steps_taken_ + 1) + ": body \"" +
+                       scene_.bodies[*body].name + "\" is no longer finite " +
+                       planar_state(world_.bodies()[*body]),
+                   exit_diverged);
 }
 
 }  // namespace lamina::cli

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "lamina/signals.h"
 #include "scene/scene_world.h"
 
 namespace lamina::cli {
@@ -51,20 +52,39 @@ render::Rect padded(const Aabb& box) {
   return {p.min, p.max};
 }
 
+// What the frames show of the region `swept`: it, the static bodies near it, and a margin.
+render::Rect view_of(const Scene& scene, const World& world, const Aabb& swept) {
+  return padded(with_static_near(scene, world, swept, grown(swept, margin_of(swept))));
+}
+
+// A camera can fit it: its corners and its size are finite (a finite size needs both).
+bool is_finite(const render::Rect& view) { return view.size().allFinite(); }
+
 }  // namespace
 
-render::Rect view_region(const Scene& scene, const WorldSettings& settings, long steps) {
-  World world = build_world(scene, settings);
+render::Rect view_region(const Simulation& simulation, long steps) {
+  const Scene& scene = simulation.scene();
+  World world = build_world(scene, simulation.world().settings());
   std::optional<Aabb> swept = bodies_box(scene, world, false);
-  for (long step = 0; swept && step < steps; ++step) {
-    world.step();
-    swept = bodies_box(scene, world, false, swept);
-  }
   if (!swept) {
     const std::optional<Aabb> fixed = bodies_box(scene, world, true);
     return padded(fixed.value_or(Aabb{Vec2(-1.0, -1.0), Vec2(1.0, 1.0)}));
   }
-  return padded(with_static_near(scene, world, *swept, grown(*swept, margin_of(*swept))));
+  render::Rect view = view_of(scene, world, *swept);
+  for (long step = 0; step < steps; ++step) {
+    if (const int signal = stop_signal()) {
+      throw stopped_by(signal, simulation.origin(),
+                       "before step 1, while fitting the frames' view; nothing written");
+    }
+    world.step();
+    if (first_non_finite_body(world)) break;  // the run diverges here and will say so
+    const Aabb wider = *bodies_box(scene, world, false, swept);
+    const render::Rect wider_view = view_of(scene, world, wider);
+    if (!is_finite(wider_view)) break;  // bodies past ~1e307 m: later frames show less
+    swept = wider;
+    view = wider_view;
+  }
+  return view;
 }
 
 }  // namespace lamina::cli
