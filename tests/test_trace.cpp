@@ -13,6 +13,7 @@
 
 #include <unistd.h>
 
+#include "output/output_file.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
 #include "scene/shortest_number.h"
@@ -173,7 +174,7 @@ TEST_SUITE("Trace") {
       std::string message;
       try {
         TraceWriter trace(path);
-      } catch (const OutputFileError& e) {
+      } catch (const OutputError& e) {
         message = e.what();
       }
       CHECK(message.find(path.string()) != std::string::npos);

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
+#include "output/output_file.h"
 #include "render/png_codec.h"
-#include "render/safe_file.h"
 
 namespace lamina::render {
 

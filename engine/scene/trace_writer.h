@@ -2,26 +2,26 @@
 // path ends in ".csv": bodies in FILE.csv, contacts in FILE.contacts.csv. Nothing appears at
 // the paths until finish(), which puts the steps written so far in place, whole: at the end of
 // a run, or of one stopped early that keeps what it has (a diverged step, Ctrl-C). A writer
-// destroyed unfinished, as when a write fails, leaves no trace file (output_file.h).
+// destroyed unfinished, as when a write fails, leaves no trace file (output/output_file.h).
 #pragma once
 
 #include <filesystem>
 #include <memory>
 #include <vector>
 
-#include "scene/output_file.h"
+#include "output/output_file.h"
 #include "scene/trace.h"
 
 namespace lamina {
 
 class TraceWriter {
  public:
-  // Opens the trace's temporary file(s). Throws OutputFileError when a path cannot be written.
+  // Opens the trace's temporary file(s). Throws OutputError when a path cannot be written.
   explicit TraceWriter(const std::filesystem::path& path);
 
-  // Appends one step. Throws OutputFileError when the disk refuses it.
+  // Appends one step. Throws OutputError when the disk refuses it.
   void write(const TraceStep& step);
-  // Puts the file(s) in place, holding every step written. Throws OutputFileError on failure.
+  // Puts the file(s) in place, holding every step written. Throws OutputError on failure.
   void finish();
 
   // The file(s) the trace goes to: the path, and for CSV the contacts file after it.

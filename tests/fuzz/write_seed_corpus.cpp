@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "output/output_file.h"
 #include "scene/builtin_scenes.h"
-#include "scene/output_file.h"
 #include "scene/scene_json.h"
 
 int main(int argc, char** argv) {

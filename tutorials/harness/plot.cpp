@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "render/safe_file.h"
+#include "output/output_file.h"
 
 namespace lamina::tutorial {
 namespace fs = std::filesystem;
@@ -75,9 +75,9 @@ std::string gnuplot_script(const Plot& plot, const fs::path& csv, const fs::path
 }
 
 void run_gnuplot(const Plot& plot, const fs::path& csv, const fs::path& png) {
-  const fs::path temporary = render::temporary_path(png);
+  const fs::path temporary = temporary_path(png);
   std::FILE* gnuplot = popen("gnuplot", "w");
-  if (gnuplot == nullptr) throw render::OutputError("cannot start gnuplot");
+  if (gnuplot == nullptr) throw OutputError("cannot start gnuplot");
   const std::string script = gnuplot_script(plot, csv, temporary);
   std::fwrite(script.data(), 1, script.size(), gnuplot);
   const int status = pclose(gnuplot);
@@ -85,7 +85,7 @@ void run_gnuplot(const Plot& plot, const fs::path& csv, const fs::path& png) {
   if (status == 0) fs::rename(temporary, png, ec);
   if (status != 0 || ec) {
     fs::remove(temporary, ec);
-    throw render::OutputError("gnuplot could not draw " + png.string());
+    throw OutputError("gnuplot could not draw " + png.string());
   }
 }
 
@@ -93,7 +93,7 @@ void run_gnuplot(const Plot& plot, const fs::path& csv, const fs::path& png) {
 
 void write_plot(const fs::path& folder, const Plot& plot) {
   const fs::path csv = folder / (plot.name + ".csv"), png = folder / (plot.name + ".png");
-  render::write_file_atomically(csv, csv_text(plot));
+  write_file_atomically(csv, csv_text(plot));
   if (gnuplot_on_path()) {
     run_gnuplot(plot, csv, png);
   } else {

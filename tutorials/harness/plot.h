@@ -30,7 +30,7 @@ struct Plot {
 };
 
 // Writes folder/<name>.csv, then folder/<name>.png with gnuplot when it is on PATH.
-// Throws render::OutputError when a file cannot be written or gnuplot fails.
+// Throws OutputError (output/output_file.h) when a file cannot be written or gnuplot fails.
 void write_plot(const std::filesystem::path& folder, const Plot& plot);
 
 }  // namespace lamina::tutorial

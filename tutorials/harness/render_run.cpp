@@ -7,9 +7,9 @@
 #include <thread>
 
 #include "harness/runs.h"
+#include "output/output_file.h"
 #include "render/frame_writer.h"
 #include "render/renderer.h"
-#include "render/safe_file.h"
 
 namespace lamina::tutorial {
 namespace {
@@ -62,7 +62,7 @@ int render_scene(Scene& scene, const Options& o, render::Renderer& renderer,
 
 void render_scenes(const TutorialInfo& info, const Options& o,
                    const std::vector<SceneFactory>& scenes) {
-  render::prepare_output_folder(o.out);
+  prepare_output_folder(o.out);
   const auto context = render::open_context(o.backend);
   render::Renderer renderer(*context, o.size);
   render::FrameWriter writer(encoder_threads(), queued_frames);

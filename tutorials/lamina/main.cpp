@@ -13,8 +13,7 @@
 #include "lamina/exit_codes.h"
 #include "lamina/scene_commands.h"
 #include "lamina/signals.h"
-#include "render/safe_file.h"
-#include "scene/output_file.h"
+#include "output/output_file.h"
 #include "scene/scene_json.h"
 
 namespace {
@@ -34,8 +33,7 @@ void execute(const Command& c) {
 void flush_standard_output() {
   std::cout.flush();
   if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !std::cout) {
-    throw lamina::OutputFileError(std::string("cannot write standard output: ") +
-                                  std::strerror(errno));
+    throw lamina::OutputError(std::string("cannot write standard output: ") + std::strerror(errno));
   }
 }
 
@@ -60,9 +58,7 @@ int main(int argc, char** argv) {
     return failed(e, exit_bad_input);
   } catch (const InputError& e) {
     return failed(e, exit_bad_input);
-  } catch (const lamina::OutputFileError& e) {
-    return failed(e, exit_bad_input);
-  } catch (const lamina::render::OutputError& e) {
+  } catch (const lamina::OutputError& e) {
     return failed(e, exit_bad_input);
   } catch (const std::exception& e) {
     return failed(e, exit_internal_failure);

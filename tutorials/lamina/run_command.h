@@ -28,7 +28,7 @@ struct RunOptions {
 };
 
 // Runs it; prints one summary line on standard output (--explain: the step instead).
-// Throws SceneError, InputError or OutputFileError for bad input, having written nothing, and
+// Throws SceneError, InputError or OutputError for bad input, having written nothing, and
 // RunStopped when the run diverges or SIGINT/SIGTERM stops it, having put the trace of the
 // steps before in place (its message says what was kept).
 void run_scene(const RunOptions& options);

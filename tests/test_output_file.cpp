@@ -1,17 +1,20 @@
-// Safe writing: an output folder that cannot be made or written is refused with one line, and
-// a write that fails leaves neither a partial file nor its temporary behind.
+// Output files: an output folder that cannot be made or written is refused with one line, a
+// file is complete or absent, and a write that fails leaves neither a partial file nor its
+// temporary behind, also when the frame writer's threads write the frames.
 #include <doctest/doctest.h>
 #include <unistd.h>
 
 #include <fstream>
+#include <iterator>
 #include <string>
 
+#include "output/output_file.h"
 #include "render/frame_writer.h"
-#include "render/safe_file.h"
 #include "render_test_frame.h"
 
 namespace {
 
+using namespace lamina;
 using namespace lamina::render;
 namespace fs = std::filesystem;
 
@@ -29,6 +32,11 @@ std::string output_error(Action action) {
 
 void touch(const fs::path& path) { std::ofstream(path) << "x"; }
 
+std::string contents(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 std::size_t file_count(const fs::path& folder) {
   return static_cast<std::size_t>(std::distance(fs::directory_iterator(folder), {}));
 }
@@ -37,7 +45,7 @@ Image small_image() { return Image{2, 2, std::vector<std::uint8_t>(12, 200)}; }
 
 }  // namespace
 
-TEST_SUITE("SafeWriting") {
+TEST_SUITE("OutputFile") {
   TEST_CASE("an output folder that is a file is refused with one line naming it") {
     const testing::ScratchFolder scratch("safe-file");
     const fs::path file = scratch.path() / "frames";
@@ -75,13 +83,51 @@ TEST_SUITE("SafeWriting") {
     CHECK(message.find("cannot write in output folder") != std::string::npos);
   }
 
-  TEST_CASE(
-      "a write that cannot be renamed into place leaves neither the file nor its "
-      "temporary") {
-    const testing::ScratchFolder scratch("safe-rename");
+  TEST_CASE("a committed file holds every piece written, in the folders made for it") {
+    const testing::ScratchFolder scratch("output-commit");
+    const fs::path target = scratch.path() / "new" / "run.jsonl";
+    OutputFile file(target);
+    file.write("first line\n");
+    file.write("second line\n");
+    CHECK_FALSE(fs::exists(target));  // nothing at the path before commit()
+    file.commit();
+    CHECK(contents(target) == "first line\nsecond line\n");
+    CHECK(file_count(target.parent_path()) == 1);  // no temporary left
+  }
+
+  TEST_CASE("a file destroyed before commit leaves nothing, not even its temporary") {
+    const testing::ScratchFolder scratch("output-uncommitted");
+    {
+      OutputFile file(scratch.path() / "run.jsonl");
+      file.write("a line\n");
+    }
+    CHECK(file_count(scratch.path()) == 0);
+  }
+
+  TEST_CASE("a path that is a folder or a device is refused with one line naming it") {
+    const testing::ScratchFolder scratch("output-not-a-file");
     const fs::path target = scratch.path() / "frame_0000.png";
-    fs::create_directory(target);  // a folder where the frame should go: rename must fail
-    output_error([&] { write_file_atomically(target, std::vector<std::uint8_t>{1, 2, 3}); });
+    fs::create_directory(target);  // a folder where the frame should go
+    const std::string message =
+        output_error([&] { write_file_atomically(target, std::vector<std::uint8_t>{1, 2, 3}); });
+    CHECK(message == "cannot write '" + target.string() + "': it is a folder");
+    CHECK(fs::is_directory(target));
+    CHECK_FALSE(fs::exists(temporary_path(target)));
+    CHECK(file_count(scratch.path()) == 1);
+    CHECK(output_error([] { OutputFile file("/dev/null"); }) ==
+          "cannot write '/dev/null': it is not a regular file");
+  }
+
+  TEST_CASE(
+      "a commit that cannot be renamed into place leaves neither the file nor its "
+      "temporary") {
+    const testing::ScratchFolder scratch("output-rename");
+    const fs::path target = scratch.path() / "trace.jsonl";
+    OutputFile file(target);
+    file.write("a line\n");
+    fs::create_directory(target);  // a folder appears where the file should go: rename fails
+    const std::string message = output_error([&] { file.commit(); });
+    CHECK(message.rfind("cannot write '" + target.string() + "': ", 0) == 0);
     CHECK(fs::is_directory(target));
     CHECK_FALSE(fs::exists(temporary_path(target)));
     CHECK(file_count(scratch.path()) == 1);
@@ -90,16 +136,18 @@ TEST_SUITE("SafeWriting") {
   TEST_CASE("the frame writer reports the first failed frame and leaves no partial file") {
     const testing::ScratchFolder scratch("safe-writer");
     fs::create_directory(scratch.path() / "frame_1.png");
-    FrameWriter writer(2, 1);
     std::string message;
-    try {
-      for (int i = 0; i < 3; ++i) {
-        writer.submit(scratch.path() / ("frame_" + std::to_string(i) + ".png"), small_image());
+    {
+      FrameWriter writer(2, 1);
+      try {
+        for (int i = 0; i < 3; ++i) {
+          writer.submit(scratch.path() / ("frame_" + std::to_string(i) + ".png"), small_image());
+        }
+        writer.finish();
+      } catch (const OutputError& e) {
+        message = e.what();
       }
-      writer.finish();
-    } catch (const OutputError& e) {
-      message = e.what();
-    }
+    }  // the writer's destructor waits for the frames other workers are still writing
     CHECK(message.find("frame_1.png") != std::string::npos);
     for (const auto& entry : fs::directory_iterator(scratch.path())) {
       CAPTURE(entry.path());
