@@ -3,11 +3,11 @@
 // Byte mutations of a scene file nearly always break its JSON, so the loader refuses it and the
 // World is never stepped. When the input is a JSON document, this mutator changes it as a
 // document instead, half of the time: one number becomes an extreme or nearby value (0, −0,
-// denormals, 1e±300, the largest double, ±1, scaled by a power of two or ten, negated), or one
-// element of an array (a body, a joint, a vector component) is copied or removed. The result is
-// written back as JSON, so scenes that parse but hold values the engine may not survive are
-// reached in one step. Other inputs, and the other half of the time, get libFuzzer's own
-// byte mutations.
+// denormals, 1e±300, the largest double, ±1, an end of a scene range, scaled by a power of two
+// or ten, negated), or one element of an array (a body, a joint, a vector component) is copied
+// or removed. The result is written back as JSON, so scenes that parse but hold values the
+// engine may not survive are reached in one step. Other inputs, and the other half of the time,
+// get libFuzzer's own byte mutations.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -18,6 +18,8 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "scene/scene_limits.h"
 
 extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t max_size);
 
@@ -37,6 +39,25 @@ void collect(json& node, int depth, std::vector<json*>& numbers, std::vector<jso
   }
 }
 
+// The ends of every range of a scene value (scene_limits.h): the corners of what the loader
+// accepts, where the engine is most likely to go non-finite.
+double range_end(std::mt19937& rng) {
+  namespace limits = lamina::scene_limits;
+  static const double ends[] = {
+      limits::dt.low,            limits::dt.high,
+      limits::iterations.low,    limits::iterations.high,
+      limits::gravity.low,       limits::gravity.high,
+      limits::coordinate.low,    limits::coordinate.high,
+      limits::angle.low,         limits::angle.high,
+      limits::size.low,          limits::size.high,
+      limits::density.low,       limits::density.high,
+      limits::friction.low,      limits::friction.high,
+      limits::speed.low,         limits::speed.high,
+      limits::angular_speed.low, limits::angular_speed.high,
+  };
+  return ends[std::uniform_int_distribution<std::size_t>(0, std::size(ends) - 1)(rng)];
+}
+
 // A value near the limits of what the loader accepts or the engine can hold.
 double extreme_or_nearby(double value, std::mt19937& rng) {
   static const double extremes[] = {0.0, -0.0, 1.0, -1.0, 1e-5, 1e-300, -1e-300,
@@ -44,12 +65,14 @@ double extreme_or_nearby(double value, std::mt19937& rng) {
                                     std::numeric_limits<double>::min(), 1e9, 1e300, -1e300,
                                     std::numeric_limits<double>::max(),
                                     -std::numeric_limits<double>::max(), M_PI, 1e4, 10001.0};
-  switch (std::uniform_int_distribution<int>(0, 3)(rng)) {
+  switch (std::uniform_int_distribution<int>(0, 4)(rng)) {
     case 0:
       return extremes[std::uniform_int_distribution<std::size_t>(0, std::size(extremes) - 1)(rng)];
     case 1:
-      return std::ldexp(value, std::uniform_int_distribution<int>(-64, 64)(rng));
+      return range_end(rng);
     case 2:
+      return std::ldexp(value, std::uniform_int_distribution<int>(-64, 64)(rng));
+    case 3:
       return value * std::pow(10.0, std::uniform_int_distribution<int>(-8, 8)(rng));
     default:
       return -value;
