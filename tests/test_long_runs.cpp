@@ -15,6 +15,7 @@
 
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
+#include "world_energy.h"
 
 using namespace lamina;
 
@@ -24,27 +25,6 @@ constexpr int steps_per_second = 60;
 constexpr int run_steps = 60 * steps_per_second;     // 60 s
 constexpr int settled_step = 1 * steps_per_second;   // the first second is the settling
 constexpr int resting_step = 10 * steps_per_second;  // from 10 s on the pile is at rest
-
-// E = Σ ½ m |v|² + ½ ωᵀ I ω − m g·x over the dynamic bodies, in J (potential 0 at y = 0).
-double mechanical_energy(const World& world) {
-  const Vec3& g = world.settings().gravity;
-  double energy = 0.0;
-  for (const RigidBody& b : world.bodies()) {
-    if (b.is_static()) continue;
-    energy += 0.5 * b.mass * b.v.squaredNorm() +
-              0.5 * b.angular_velocity.dot(b.inertia_world() * b.angular_velocity) -
-              b.mass * g.dot(b.x);
-  }
-  return energy;
-}
-
-// The potential energy of lifting every dynamic body by `height`, in J: the unit the energy
-// bounds are stated in.
-double lift_energy(const World& world, double height) {
-  double weight = 0.0;  // Σ m |g|, in N
-  for (const RigidBody& b : world.bodies()) weight += b.mass * world.settings().gravity.norm();
-  return weight * height;
-}
 
 // The depth of the deepest contact the last step solved, in m (0 when nothing penetrates).
 // Its separation was measured at the start of that step, i.e. on the state the step before left.

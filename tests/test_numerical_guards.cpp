@@ -23,6 +23,7 @@
 #include "scene/scene_json.h"
 #include "scene/scene_limits.h"
 #include "scene/scene_world.h"
+#include "world_energy.h"
 
 using namespace lamina;
 
@@ -30,18 +31,6 @@ namespace {
 
 const double slop = ContactSettings().slop;  // penetration the contacts leave alone, in m
 constexpr double g = 9.8;                    // |gravity| of the scenes below, in m/s²
-
-// Total mechanical energy of the moving bodies: Σ ½ m v² + ½ I_zz ω² − m g·x, in J.
-double energy(const World& world) {
-  double total = 0.0;
-  for (const RigidBody& b : world.bodies()) {
-    if (b.is_static()) continue;
-    const double spin = b.angular_velocity.z();
-    total += 0.5 * b.mass * b.v.squaredNorm() + 0.5 * b.inertia_world()(2, 2) * spin * spin -
-             b.mass * world.settings().gravity.dot(b.x);
-  }
-  return total;
-}
 
 // What is wrong with a body's state after a step, or "" when nothing is.
 std::string fault_of(const RigidBody& b) {
@@ -57,7 +46,7 @@ std::string fault_of(const RigidBody& b) {
 // A scene's World, every body inspected after every step; the first fault stops the run.
 struct Watch {
   explicit Watch(const Scene& s, const WorldSettings& settings)
-      : scene(s), world(build_world(s, settings)), start_energy(energy(world)),
+      : scene(s), world(build_world(s, settings)), start_energy(mechanical_energy(world)),
         peak_energy(start_energy) {}
   explicit Watch(const Scene& s) : Watch(s, world_settings(s)) {}
 
@@ -84,7 +73,7 @@ struct Watch {
       if (b.is_static()) continue;
       top_speed = std::max(top_speed, b.v.norm());
     }
-    peak_energy = std::max(peak_energy, energy(world));
+    peak_energy = std::max(peak_energy, mechanical_energy(world));
   }
 
   const RigidBody& body(const std::string& name) const {
@@ -150,11 +139,7 @@ Scene stack(int count, double dt = 1.0 / 60.0, int iterations = 10) {
 // push-out may give bodies placed touching. Contacts with e = 0 and friction only take energy,
 // and the semi-implicit step loses ½ m g² Δt² per step of free fall; the push-out is the one
 // source, lifting a body out of a penetration without doing work on it.
-double slop_energy(const World& world) {
-  double mass = 0.0;
-  for (const RigidBody& b : world.bodies()) mass += b.mass;
-  return mass * g * slop;
-}
+double slop_energy(const World& world) { return lift_energy(world, slop); }
 
 // Momentum along x of the bodies whose names start with `prefix`, in kg·m/s.
 double momentum_x(const Watch& watch, const std::string& prefix) {

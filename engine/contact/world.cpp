@@ -268,4 +268,12 @@ void World::integrate_bodies() {
   }
 }
 
+std::optional<std::size_t> first_non_finite_body(const World& world) {
+  const std::vector<RigidBody>& bodies = world.bodies();
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies[i].has_finite_state()) return i;
+  }
+  return std::nullopt;
+}
+
 }  // namespace lamina

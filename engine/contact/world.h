@@ -15,7 +15,9 @@
 //   for the position update only.
 #pragma once
 
+#include <cstddef>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "constraints/constrained_step.h"
@@ -115,5 +117,9 @@ class World {
   std::vector<double> position_lambda_;      // its λ, in N
   std::vector<Vec6> push_out_;               // split impulse: each body's [v; ω] push-out, m/s, rad/s
 };
+
+// The first body (in the order added) whose x, q, v or ω is no longer finite: where a run that
+// diverged shows it. Nothing while every state is finite.
+std::optional<std::size_t> first_non_finite_body(const World& world);
 
 }  // namespace lamina

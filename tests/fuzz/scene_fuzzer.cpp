@@ -64,13 +64,6 @@ std::optional<lamina::World> build(const lamina::Scene& scene) {
   }
 }
 
-bool all_finite(const lamina::World& world) {
-  for (const lamina::RigidBody& body : world.bodies()) {
-    if (!body.has_finite_state()) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -89,7 +82,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   for (int i = 0; i < steps; ++i) world->step();
   ++non_finite_count.stepped;
-  if (!all_finite(*world)) {
+  if (lamina::first_non_finite_body(*world)) {
     ++non_finite_count.non_finite;
     if (non_finite_count.abort_on_one) {
       std::fprintf(stderr, "scene_fuzzer: non-finite body state after %d steps\n", steps);

@@ -36,14 +36,6 @@ World checked_world(const Scene& scene, const WorldSettings& settings, const std
   }
 }
 
-std::optional<std::size_t> first_non_finite_body(const World& world) {
-  const std::vector<RigidBody>& bodies = world.bodies();
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (!bodies[i].has_finite_state()) return i;
-  }
-  return std::nullopt;
-}
-
 Simulation::Simulation(Scene scene, const WorldSettings& settings, std::string origin)
     : scene_(std::move(scene)),
       origin_(std::move(origin)),

@@ -2,8 +2,6 @@
 // recorded (the trace, the progress bar, the report --explain prints).
 #pragma once
 
-#include <cstddef>
-#include <optional>
 #include <string>
 
 #include "contact/world.h"
@@ -51,8 +49,5 @@ class Simulation {
 
 // The world built from the scene, with the engine's refusals named after `origin`.
 World checked_world(const Scene& scene, const WorldSettings& settings, const std::string& origin);
-
-// The first body (World index = scene index) whose x, q, v or ω is no longer finite, if any.
-std::optional<std::size_t> first_non_finite_body(const World& world);
 
 }  // namespace lamina::cli
