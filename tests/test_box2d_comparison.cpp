@@ -59,8 +59,8 @@ Scene box_scene(const Case& c) {
 World lamina_world(const Scene& scene, PositionCorrection correction) {
   WorldSettings settings;
   settings.contact.correction = correction;
-  settings.gravity = Vec3(scene.gravity[0], scene.gravity[1], 0.0);
-  settings.dt = scene.dt;
+  settings.step.gravity = Vec3(scene.gravity[0], scene.gravity[1], 0.0);
+  settings.step.dt = scene.dt;
   World world(settings);
   for (const BodyDescription& b : scene.bodies) {
     const Vec3 x(b.position[0], b.position[1], 0.0);

@@ -191,7 +191,7 @@ TEST_SUITE("Contact") {
     run(world, 599);
     WorldReport report;
     world.step(report);
-    const Vec6 wrench = constraint_wrench(report.velocity, 1);
+    const Vec6 wrench = report.velocity.constraint_wrench(1);
     const double mass = world.bodies()[1].mass;
     CHECK(wrench[1] == doctest::Approx(mass * g).epsilon(1e-6));  // converged PGS, warm started
     CHECK(std::abs(wrench[0]) < 1e-6 * mass * g);
@@ -244,13 +244,18 @@ TEST_SUITE("Contact") {
     run(world, 120);
     WorldReport report;
     world.step(report);
-    REQUIRE(report.kinds.size() == 6);
-    CHECK(report.kinds[0] == RowKind::contact);
-    CHECK(report.kinds[1] == RowKind::contact);
-    CHECK(report.kinds[2] == RowKind::friction);
-    CHECK(report.kinds[3] == RowKind::friction);
-    CHECK(report.kinds[4] == RowKind::joint);
-    CHECK(report.kinds[5] == RowKind::joint);
+    // the row map: the pair's two contact rows, then their friction rows, then the joint's two
+    REQUIRE(report.velocity.mlcp.row_count() == 6);
+    REQUIRE(report.pairs.size() == 1);
+    const ContactPair& pair = report.pairs[0];
+    REQUIRE(pair.count == 2);
+    CHECK(pair.contacts[0].row == 0);
+    CHECK(pair.contacts[1].row == 1);
+    CHECK(pair.contacts[0].friction_rows[0] == 2);
+    CHECK(pair.contacts[1].friction_rows[0] == 3);
+    REQUIRE(report.joints.size() == 1);
+    CHECK(report.joints[0].first == 4);
+    CHECK(report.joints[0].count == 2);
     const RigidBody& box = world.bodies()[1];
     CHECK((box.x + box.rotation * Vec3(0.5, 0.5, 0.0) - pin).norm() < 1e-3);
     CHECK(at_rest(box));
@@ -278,10 +283,13 @@ TEST_SUITE("World") {
       a.step();
       WorldReport report;
       b.step(report);
-      for (size_t r = 0; r < report.kinds.size(); ++r) {
-        if (report.kinds[r] != RowKind::out_of_plane_friction) continue;
-        ++u2_rows;
-        REQUIRE(report.velocity.solution.lambda[static_cast<Eigen::Index>(r)] == 0.0);
+      for (const ContactPair& pair : report.pairs) {
+        for (int k = 0; k < pair.count; ++k) {
+          const int u2 = pair.contacts[k].friction_rows[1];  // the row along u2 = z, or −1
+          if (u2 < 0) continue;
+          ++u2_rows;
+          REQUIRE(report.velocity.solution.lambda[u2] == 0.0);
+        }
       }
     }
     CHECK(u2_rows > 0);
@@ -315,24 +323,24 @@ TEST_SUITE("World") {
     WorldReport report;
     world.step(report);
     CHECK(report.velocity.solution.residuals.size() == 10);  // the default 10 sweeps
-    CHECK(report.contacts.size() == 2);
-    CHECK(report.velocity.mlcp.rows.size() == 4);  // two contact rows, two friction rows
-    CHECK(report.position.mlcp.rows.size() == 2);  // split impulse: one row per contact
+    CHECK(report.contacts().size() == 2);
+    CHECK(report.velocity.mlcp.row_count() == 4);  // two contact rows, two friction rows
+    CHECK(report.position.mlcp.row_count() == 2);  // split impulse: one row per contact
     CHECK(report.time == doctest::Approx(5.0 / 60.0).epsilon(1e-12));
   }
 
   TEST_CASE("bad settings and bodies out of the plane are refused with a message") {
     WorldSettings bad;
-    bad.dt = 0.0;
+    bad.step.dt = 0.0;
     CHECK_THROWS_AS(World{bad}, std::invalid_argument);
     WorldSettings bad_beta;
-    bad_beta.contact.beta = 1.5;
+    bad_beta.step.beta = 1.5;
     CHECK_THROWS_AS(World{bad_beta}, std::invalid_argument);
     World world(WorldSettings{});
     RigidBody lifted = box_body(1.0, 0.5, 0.5, Vec3(0.0, 1.0, 0.1));
     CHECK_THROWS_AS(world.add_body(lifted, Shape::box(0.5, 0.5)), std::invalid_argument);
     CHECK_THROWS_AS(world.add_box(1.0, 0.5, 0.5, Vec3::Zero(), 0.0, material(-0.1)),
                     std::invalid_argument);
-    CHECK_THROWS_AS(Shape::circle(0.0), std::invalid_argument);
+    CHECK_THROWS_AS(validate(Shape::circle(0.0)), std::invalid_argument);
   }
 }

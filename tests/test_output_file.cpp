@@ -1,14 +1,19 @@
 // Output files: an output folder that cannot be made or written is refused with one line, a
 // file is complete or absent, and a write that fails leaves neither a partial file nor its
-// temporary behind, also when the frame writer's threads write the frames.
+// temporary behind, also when the frame writer's threads write the frames or another program
+// writes the file. Every temporary that exists is registered, so that a dying process can remove
+// it (remove_unfinished_files(), the `lamina` command's second Ctrl-C), and no other.
 #include <doctest/doctest.h>
 #include <unistd.h>
 
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "output/output_file.h"
+#include "output/unfinished_files.h"
 #include "render/frame_writer.h"
 #include "render_test_frame.h"
 
@@ -39,6 +44,14 @@ std::string contents(const fs::path& path) {
 
 std::size_t file_count(const fs::path& folder) {
   return static_cast<std::size_t>(std::distance(fs::directory_iterator(folder), {}));
+}
+
+std::size_t temporary_count(const fs::path& folder) {
+  std::size_t count = 0;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    if (entry.path().extension() == ".tmp") ++count;
+  }
+  return count;
 }
 
 Image small_image() { return Image{2, 2, std::vector<std::uint8_t>(12, 200)}; }
@@ -153,5 +166,108 @@ TEST_SUITE("OutputFile") {
       CAPTURE(entry.path());
       CHECK(entry.path().extension() != ".tmp");
     }
+  }
+}
+
+// remove_unfinished_files() is what a dying process calls; here it runs in the test itself, and
+// what it removes shows what is registered. No test holds a registered file after it ends.
+TEST_SUITE("Unfinished files") {
+  TEST_CASE("an open file's temporary is removed, and nothing at its path") {
+    const testing::ScratchFolder scratch("unfinished-open");
+    const fs::path target = scratch.path() / "trace.jsonl";
+    std::ofstream(target) << "the last run's trace\n";
+    OutputFile file(target);
+    file.write("a line\n");
+    REQUIRE(fs::exists(temporary_path(target)));
+    remove_unfinished_files();
+    CHECK_FALSE(fs::exists(temporary_path(target)));
+    CHECK(contents(target) == "the last run's trace\n");  // the complete file is not touched
+    // Its writer finds the temporary gone: the commit fails with one line, the old file stays.
+    const std::string message = output_error([&] { file.commit(); });
+    CHECK(message.rfind("cannot write '" + target.string() + "': ", 0) == 0);
+    CHECK(contents(target) == "the last run's trace\n");
+  }
+
+  TEST_CASE("a committed or destroyed file is no longer registered") {
+    const testing::ScratchFolder scratch("unfinished-done");
+    OutputFile committed(scratch.path() / "committed.jsonl");
+    committed.commit();
+    { OutputFile destroyed(scratch.path() / "destroyed.jsonl"); }
+    // Files at their temporary names that are no longer theirs: they must stay.
+    touch(temporary_path(scratch.path() / "committed.jsonl"));
+    touch(temporary_path(scratch.path() / "destroyed.jsonl"));
+    remove_unfinished_files();
+    CHECK(temporary_count(scratch.path()) == 2);
+  }
+
+  TEST_CASE("a file that finds the table full is written all the same, only not registered") {
+    const testing::ScratchFolder scratch("unfinished-full");
+    std::vector<std::unique_ptr<OutputFile>> files;
+    for (std::size_t i = 0; i <= max_unfinished_files; ++i) {
+      files.push_back(std::make_unique<OutputFile>(scratch.path() / ("f" + std::to_string(i))));
+    }
+    remove_unfinished_files();
+    // The first max_unfinished_files temporaries are removed; the one past the table is left.
+    REQUIRE(temporary_count(scratch.path()) == 1);
+    OutputFile& last = *files.back();
+    CHECK(fs::exists(temporary_path(last.path())));
+    last.write("whole\n");
+    last.commit();
+    CHECK(contents(last.path()) == "whole\n");
+    files.clear();
+    // The rows are free again once their files are gone.
+    OutputFile next(scratch.path() / "next");
+    remove_unfinished_files();
+    CHECK_FALSE(fs::exists(temporary_path(next.path())));
+  }
+}
+
+TEST_SUITE("make_file_atomically") {
+  TEST_CASE("the file the maker writes at the temporary path lands at the path, whole") {
+    const testing::ScratchFolder scratch("make-file");
+    const fs::path target = scratch.path() / "plot.png";
+    make_file_atomically(target, [&](const fs::path& temporary) {
+      CHECK(temporary == temporary_path(target));
+      CHECK_FALSE(fs::exists(target));  // nothing at the path while the maker writes
+      std::ofstream(temporary) << "drawn";
+      return std::string();
+    });
+    CHECK(contents(target) == "drawn");
+    CHECK(file_count(scratch.path()) == 1);  // no temporary left
+  }
+
+  TEST_CASE("the maker's temporary is registered while it writes") {
+    const testing::ScratchFolder scratch("make-registered");
+    const fs::path target = scratch.path() / "plot.png";
+    const std::string message = output_error([&] {
+      make_file_atomically(target, [&](const fs::path& temporary) {
+        std::ofstream(temporary) << "half drawn";
+        remove_unfinished_files();  // as a dying process would
+        CHECK_FALSE(fs::exists(temporary));
+        return std::string();
+      });
+    });
+    CHECK(message == "cannot write '" + target.string() + "': No such file or directory");
+    CHECK(file_count(scratch.path()) == 0);
+  }
+
+  TEST_CASE("a maker that fails or throws leaves neither the file nor its temporary") {
+    const testing::ScratchFolder scratch("make-fails");
+    const fs::path target = scratch.path() / "plot.png";
+    const auto half_drawn = [](const fs::path& temporary) { std::ofstream(temporary) << "half"; };
+    CHECK(output_error([&] {
+            make_file_atomically(target, [&](const fs::path& temporary) {
+              half_drawn(temporary);
+              return std::string("gnuplot could not draw it");
+            });
+          }) == "cannot write '" + target.string() + "': gnuplot could not draw it");
+    CHECK(file_count(scratch.path()) == 0);
+    CHECK_THROWS_AS(make_file_atomically(target,
+                                         [&](const fs::path& temporary) -> std::string {
+                                           half_drawn(temporary);
+                                           throw std::runtime_error("the maker's own error");
+                                         }),
+                    std::runtime_error);
+    CHECK(file_count(scratch.path()) == 0);
   }
 }

@@ -17,108 +17,26 @@
 #include "constraints/mlcp.h"
 #include "constraints/pgs_solver.h"
 #include "constraints/revolute_joint.h"
+#include "support/random_systems.h"
 
 using namespace lamina;
 
 namespace {
 
-constexpr double dt = 1.0 / 60.0;  // Δt of every system here, in s
-
-double uniform(std::mt19937& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-
-// A matrix with entries uniform in [−scale, scale] (seeded; Eigen's Random would use rand()).
-Eigen::MatrixXd random_matrix(std::mt19937& rng, Eigen::Index rows, Eigen::Index cols,
-                              double scale) {
-  return Eigen::MatrixXd::NullaryExpr(rows, cols, [&] { return uniform(rng, -scale, scale); });
-}
-
-Vec3 random_vec3(std::mt19937& rng, double scale) { return random_matrix(rng, 3, 1, scale); }
-
-Vec6 random_vec6(std::mt19937& rng) { return random_matrix(rng, 6, 1, 1.0); }
-
-// A dynamic body: mass in [1, 5] kg, principal inertias in [0.5, 2] kg·m² on randomly turned
-// axes, and random velocity and accumulated force (they make η).
-RigidBody random_body(std::mt19937& rng) {
-  const Vec3 principal(uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0), uniform(rng, 0.5, 2.0));
-  const Quat q = Quat(uniform(rng, -1.0, 1.0), uniform(rng, -1.0, 1.0), uniform(rng, -1.0, 1.0),
-                      uniform(rng, -1.0, 1.0))
-                     .normalized();
-  const Mat3 R = q.toRotationMatrix();
-  RigidBody body = RigidBody::dynamic_body(uniform(rng, 1.0, 5.0),
-                                           R * principal.asDiagonal() * R.transpose(),
-                                           random_vec3(rng, 1.0), q);
-  body.v = random_vec3(rng, 1.0);
-  body.angular_velocity = random_vec3(rng, 1.0);
-  body.force = random_vec3(rng, 10.0);
-  body.torque = random_vec3(rng, 1.0);
-  return body;
-}
-
-// A row on a random body pair (one in three against the world), Jsp entries in [−1, 1],
-// ζ in [−1, 1] m/s, no bounds.
-ConstraintRow random_row(std::mt19937& rng, int body_count) {
-  ConstraintRow row;
-  std::uniform_int_distribution<int> pick(0, body_count - 1);
-  row.Jmap[0] = pick(rng);
-  if (uniform(rng, 0.0, 3.0) > 1.0) {
-    do row.Jmap[1] = pick(rng); while (row.Jmap[1] == row.Jmap[0]);
-  }
-  for (int k = 0; k < 2; ++k) {
-    if (row.Jmap[k] >= 0) row.Jsp[k] = random_vec6(rng);
-  }
-  row.zeta = uniform(rng, -1.0, 1.0);
-  return row;
-}
-
-// Bounds of one of eq. 3-26's three kinds, at random: equality, contact [0, ∞), or a box
-// [λ⁻, λ⁺] with λ⁻ in [−60, 30] N and a width in [1, 60] N (λ of these systems is ~ ±60 N).
-void set_random_bounds(std::mt19937& rng, ConstraintRow& row) {
-  const double kind = uniform(rng, 0.0, 3.0);
-  if (kind < 1.0) return;
-  if (kind < 2.0) {
-    row.lambda_min = 0.0;
-    return;
-  }
-  row.lambda_min = uniform(rng, -60.0, 30.0);
-  row.lambda_max = row.lambda_min + uniform(rng, 1.0, 60.0);
-}
-
-struct RandomSystem {
-  std::vector<RigidBody> bodies;  // the bodies the rows act on
-  Mlcp mlcp;                      // the sparse MLCP the solver sees
-  DenseSystem dense;              // the same system written out
-};
-
-RandomSystem random_system(std::mt19937& rng, int body_count, int row_count, bool bounded) {
-  RandomSystem sys;
-  for (int b = 0; b < body_count; ++b) sys.bodies.push_back(random_body(rng));
-  std::vector<ConstraintRow> rows;
-  for (int i = 0; i < row_count; ++i) {
-    rows.push_back(random_row(rng, body_count));
-    if (bounded) set_random_bounds(rng, rows.back());
-  }
-  sys.dense = build_dense_system(sys.bodies, rows, dt);
-  sys.mlcp = assemble_mlcp(sys.bodies, rows, dt);
-  return sys;
-}
+constexpr double dt = random_system_dt;  // Δt of every system here, in s
 
 double condition_number(const Eigen::MatrixXd& A) {
   const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A).eigenvalues();
   return ev.maxCoeff() / ev.minCoeff();
 }
 
-Eigen::VectorXd lower_bounds(const Mlcp& mlcp) {
-  Eigen::VectorXd lo(mlcp.eta.size());
-  for (Eigen::Index i = 0; i < lo.size(); ++i) lo[i] = mlcp.rows[i].lambda_min;
-  return lo;
-}
-
-Eigen::VectorXd upper_bounds(const Mlcp& mlcp) {
-  Eigen::VectorXd hi(mlcp.eta.size());
-  for (Eigen::Index i = 0; i < hi.size(); ++i) hi[i] = mlcp.rows[i].lambda_max;
-  return hi;
+// The fixed bounds λ⁻ (side 0) or λ⁺ (side 1) of every row (these systems have no friction rows,
+// whose bounds would follow λ).
+Eigen::VectorXd fixed_bounds(const Mlcp& mlcp, int side) {
+  const Eigen::VectorXd lambda = Eigen::VectorXd::Zero(mlcp.row_count());
+  Eigen::VectorXd bound(mlcp.row_count());
+  for (int i = 0; i < mlcp.row_count(); ++i) bound[i] = mlcp.bounds(i, lambda.data())[side];
+  return bound;
 }
 
 // Every condition of eq. 3-24 for W = A λ − η, to tolerance tol (absolute, on λ and on W).
@@ -208,7 +126,7 @@ TEST_SUITE("PgsSolver") {
       const Eigen::VectorXd b = random_matrix(rng, s, 1, 10.0);
       const Eigen::VectorXd exact = A.ldlt().solve(b);
       // up to 200 sweeps, stopping at ‖A λ − b‖ ≤ 1e-12 (b ~ 10); measured: at most 17 sweeps
-      const PgsResult gs = gauss_seidel(A, b, Eigen::VectorXd::Zero(s), {200, 1e-12, false});
+      const SweepResult gs = gauss_seidel(A, b, Eigen::VectorXd::Zero(s), {200, 1e-12, false});
       CHECK(gs.iterations < 200);
       // ‖λ − λ_exact‖ ≤ ‖A⁻¹‖ ‖A λ − b‖ ≤ 1e-12 since A's eigenvalues are ≥ 1
       CHECK((gs.lambda - exact).norm() <= 1e-12);
@@ -219,10 +137,10 @@ TEST_SUITE("PgsSolver") {
     std::mt19937 rng(11);
     const RandomSystem sys = random_system(rng, 3, 6, false);
     for (int sweeps = 1; sweeps <= 5; ++sweeps) {
-      const PgsSettings settings{sweeps, 0.0, false};
+      const SweepSettings settings{sweeps, 0.0, false};
       const Eigen::VectorXd zero = Eigen::VectorXd::Zero(6);
-      const PgsResult pgs = solve_pgs(sys.mlcp, zero, settings);
-      const PgsResult gs = gauss_seidel(sys.dense.JB, sys.dense.eta, zero, settings);
+      const SweepResult pgs = solve_pgs(sys.mlcp, zero, settings);
+      const SweepResult gs = gauss_seidel(sys.dense.JB, sys.dense.eta, zero, settings);
       // the text: PGS's Delta is Gauss-Seidel's Delta; equal up to rounding (1e-12 relative)
       CHECK((pgs.lambda - gs.lambda).norm() <= 1e-12 * (1.0 + gs.lambda.norm()));
     }
@@ -237,7 +155,7 @@ TEST_SUITE("PgsSolver") {
       const Eigen::VectorXd exact = sys.dense.JB.ldlt().solve(sys.dense.eta);
       // up to 2000 sweeps, stopping once the MLCP residual ‖W‖ ≤ 1e-10 (η ~ 60 m/s²);
       // measured: at most 266 sweeps
-      const PgsResult pgs = solve_pgs(sys.mlcp, Eigen::VectorXd::Zero(6), {2000, 1e-10, false});
+      const SweepResult pgs = solve_pgs(sys.mlcp, Eigen::VectorXd::Zero(6), {2000, 1e-10, false});
       CHECK(pgs.iterations < 2000);
       // ‖λ − λ_exact‖ ≤ ‖(J B)⁻¹‖ ‖W‖; 1e-7 N leaves room for ‖(J B)⁻¹‖ up to 1e3 kg
       CHECK((pgs.lambda - exact).norm() <= 1e-7);
@@ -250,10 +168,10 @@ TEST_SUITE("PgsSolver") {
       for (int trial = 0; trial < 10; ++trial) {
         const RandomSystem sys = random_system(rng, 3, s, true);
         REQUIRE(condition_number(sys.dense.JB) < 100.0);
-        const Eigen::VectorXd lo = lower_bounds(sys.mlcp);
-        const Eigen::VectorXd hi = upper_bounds(sys.mlcp);
+        const Eigen::VectorXd lo = fixed_bounds(sys.mlcp, 0);
+        const Eigen::VectorXd hi = fixed_bounds(sys.mlcp, 1);
         // stop at ‖W‖ ≤ 1e-10 (eq. 3-24 residual, mlcp.h); measured: at most 132 sweeps
-        const PgsResult pgs = solve_pgs(sys.mlcp, Eigen::VectorXd::Zero(s), {2000, 1e-10, false});
+        const SweepResult pgs = solve_pgs(sys.mlcp, Eigen::VectorXd::Zero(s), {2000, 1e-10, false});
         CHECK(pgs.iterations < 2000);
         // eq. 3-24 to 1e-8 (N for λ, m/s² for W): the solver stopped at ‖W‖ ≤ 1e-10
         CHECK(satisfies_eq_3_24(sys.dense.JB, sys.dense.eta, lo, hi, pgs.lambda, 1e-8));
@@ -268,13 +186,13 @@ TEST_SUITE("PgsSolver") {
   TEST_CASE("PGS stops at the tolerance and records the residual of every sweep") {
     std::mt19937 rng(13);
     const RandomSystem sys = random_system(rng, 3, 6, true);
-    const PgsResult pgs = solve_pgs(sys.mlcp, Eigen::VectorXd::Zero(6), {1000, 1e-6, true});
+    const SweepResult pgs = solve_pgs(sys.mlcp, Eigen::VectorXd::Zero(6), {1000, 1e-6, true});
     REQUIRE(pgs.iterations < 1000);
     CHECK(pgs.residuals.size() == static_cast<size_t>(pgs.iterations));
     CHECK(pgs.residuals.back() <= 1e-6);
     CHECK(pgs.residuals[pgs.residuals.size() - 2] > 1e-6);
-    // each recorded value is mlcp_residual after that sweep (identity)
-    CHECK(pgs.residuals.back() == mlcp_residual(sys.mlcp, pgs.lambda));
+    // each recorded value is the MLCP's residual after that sweep (identity)
+    CHECK(pgs.residuals.back() == sys.mlcp.residual(pgs.lambda.data()));
   }
 
   TEST_CASE("TransposeMultiply scales row i's B by λ[i], not by λ of its body index") {
@@ -287,16 +205,22 @@ TEST_SUITE("PgsSolver") {
     row0.Jmap = {1, 0};
     row1.Jsp = {random_vec6(rng), Vec6::Zero()};
     row1.Jmap = {0, world};
-    const Mlcp mlcp = assemble_mlcp(bodies, {row0, row1}, dt);
+    const std::vector<ConstraintRow> rows{row0, row1};
+    const Mlcp mlcp = assemble_mlcp(bodies, rows, dt);
     const Eigen::VectorXd lambda = Eigen::Vector2d(2.0, 5.0);
-    const std::vector<Vec6> a = transpose_multiply(mlcp, lambda);
+    // PGS's a = B λ_exp before its first sweep (0 sweeps: the text's TransposeMultiply alone)
+    PgsSolver solver;
+    Eigen::VectorXd solved = lambda;
+    SweepResult result;
+    solver.solve(mlcp, solved.data(), {0, 0.0, false}, result);
+    const std::vector<Vec6> a{solver.velocity_change(0), solver.velocity_change(1)};
     // expected: a = B λ = M⁻¹ Jᵀ λ from the dense path (eq. 3-16)
-    const DenseSystem dense = build_dense_system(bodies, mlcp.rows, dt);
+    const DenseSystem dense = build_dense_system(bodies, rows, dt);
     const Eigen::VectorXd expected = dense.inverse_mass * dense.J.transpose() * lambda;
     CHECK((a[0] - expected.segment<6>(0)).norm() <= 1e-12 * expected.norm());
     CHECK((a[1] - expected.segment<6>(6)).norm() <= 1e-12 * expected.norm());
     // the text's version would give body 1 λ[1] Bsp[0][0] = 5 Bsp[0][0]: visibly different
-    const Vec6 text_a1 = lambda[1] * mlcp.Bsp[0][0];
+    const Vec6 text_a1 = lambda[1] * mlcp.b_block(0, 0);
     CHECK((a[1] - text_a1).norm() > 0.1 * expected.norm());
   }
 
@@ -305,22 +229,24 @@ TEST_SUITE("PgsSolver") {
     std::vector<RigidBody> bodies;
     const ConstraintList joints = straight_chain(bodies, 4, -M_PI / 2 + 0.3);
     ConstrainedStepSettings settings;
-    settings.pgs = {1000, 1e-3, false};  // sweeps until ‖W‖ ≤ 1e-3 m/s² (1e-4 g)
+    settings.step.iterations = 1000;  // sweeps until ‖W‖ ≤ 1e-3 m/s² (1e-4 g)
+    settings.tolerance = 1e-3;
+    const SweepSettings sweeps{settings.step.iterations, settings.tolerance, false};
     WarmStart warm_start;
     int warm_total = 0;
     int cold_total = 0;
     for (int step = 0; step < 60; ++step) {
       StepReport report;
       constrained_step(bodies, joints, settings, warm_start, &report);
-      const auto s = report.mlcp.eta.size();
-      const PgsResult cold = solve_pgs(report.mlcp, Eigen::VectorXd::Zero(s), settings.pgs);
+      const auto s = report.mlcp.row_count();
+      const SweepResult cold = solve_pgs(report.mlcp, Eigen::VectorXd::Zero(s), sweeps);
       if (step == 0) continue;  // the first step has no last answer to start from
       // measured: from last step's λ every step needs strictly fewer sweeps than from zero
       CHECK(report.solution.iterations < cold.iterations);
       warm_total += report.solution.iterations;
       cold_total += cold.iterations;
       if (step == 30) {
-        const PgsSettings ten{10, 0.0, true};
+        const SweepSettings ten{10, 0.0, true};
         MESSAGE("step 30, ‖W‖ (m/s²) per sweep from last λ:"
                 << join(solve_pgs(report.mlcp, report.lambda_exp, ten).residuals));
         MESSAGE("step 30, ‖W‖ (m/s²) per sweep from zero:   "

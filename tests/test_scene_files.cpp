@@ -7,6 +7,7 @@
 
 #include "scene/builtin_scenes.h"
 #include "scene/scene_json.h"
+#include "scene/scene_world.h"
 
 using namespace lamina;
 
@@ -14,11 +15,16 @@ namespace {
 
 const std::string bad_scenes = std::string(LAMINA_TEST_DATA_DIR) + "/bad_scenes/";
 
+// What refuses the file, as `lamina check` says it: the reader (its form and ranges), or the
+// engine when the scene's World is built (its physical rules), led by the JSON path.
 std::string message_for(const std::string& path) {
   try {
-    read_scene_file(path);
+    const Scene scene = read_scene_file(path);
+    build_world(scene, world_settings(scene));
   } catch (const SceneError& e) {
     return e.what();
+  } catch (const std::invalid_argument& e) {
+    return path + ": " + e.what();
   }
   return "(accepted)";
 }

@@ -17,9 +17,9 @@
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
 #include "scene/shortest_number.h"
-#include "scene/trace_csv.h"
-#include "scene/trace_json.h"
-#include "scene/trace_writer.h"
+#include "trace/trace_csv.h"
+#include "trace/trace_json.h"
+#include "trace/trace_writer.h"
 
 using namespace lamina;
 namespace fs = std::filesystem;

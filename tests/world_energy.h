@@ -9,7 +9,7 @@ namespace lamina {
 // E = Σ (½ m vᵀv + ½ ωᵀ I ω) − m g·x over the dynamic bodies, in J: eq. 1-47 plus gravity's
 // potential energy, 0 at x = 0 (the text's E is kinetic only).
 inline double mechanical_energy(const World& world) {
-  const Vec3& g = world.settings().gravity;
+  const Vec3& g = world.settings().step.gravity;
   double energy = 0.0;
   for (const RigidBody& b : world.bodies()) {
     if (b.is_static()) continue;
@@ -24,7 +24,7 @@ inline double mechanical_energy(const World& world) {
 inline double lift_energy(const World& world, double height) {
   double weight = 0.0;  // in N
   for (const RigidBody& b : world.bodies()) {
-    if (!b.is_static()) weight += b.mass * world.settings().gravity.norm();
+    if (!b.is_static()) weight += b.mass * world.settings().step.gravity.norm();
   }
   return weight * height;
 }

@@ -6,8 +6,8 @@
 #include <array>
 #include <cmath>
 
-#include "harness/format.h"
-#include "harness/tutorial.h"
+#include "app/harness/format.h"
+#include "app/harness/tutorial.h"
 #include "kinematics/inertia.h"
 #include "kinematics/momentum.h"
 #include "kinematics/particle.h"

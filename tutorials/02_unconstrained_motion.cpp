@@ -5,10 +5,10 @@
 // energy.png shows it.
 #include <array>
 
-#include "harness/body_view.h"
-#include "harness/format.h"
-#include "harness/plot.h"
-#include "harness/tutorial.h"
+#include "app/views/motion/body_view.h"
+#include "app/harness/format.h"
+#include "app/harness/plot.h"
+#include "app/harness/tutorial.h"
 #include "kinematics/momentum.h"
 #include "motion/integrator.h"
 
@@ -90,7 +90,7 @@ class ThrownBox : public tutorial::Scene {
       frame.paths.push_back({exact_path(run.origin), render::palette::grey, true});
       frame.paths.push_back({run.trail, run.colour, false});
       frame.bodies.push_back(
-          tutorial::box_view(run.bodies[0], half_extents, tint(run.colour, 0.35)));
+          view::box_view(run.bodies[0], half_extents, tint(run.colour, 0.35)));
       frame.panels.push_back(run_panel(run, t));
     }
     const double divider = launch.x() + panel_offset - 1.3;

@@ -11,7 +11,7 @@
 #include "ch3/chain.h"
 #include "ch3/incline.h"
 #include "ch3/pendulum.h"
-#include "harness/tutorial.h"
+#include "app/harness/tutorial.h"
 
 int main(int argc, char** argv) {
   using namespace lamina;

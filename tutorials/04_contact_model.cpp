@@ -6,16 +6,23 @@
 //   cache_on_vs_off  the same drop twice side by side, with and without the contact cache, and
 //                    the plot penetration.png (deepest corner below the ground against t);
 //   friction_ramp    a box that sticks (tan θ < μ) and one that slides at g (sin θ − μ cos θ)
-//                    (--no-cache: without the cache).
-// The scene is the docs' (docs/ch4-contact-model.md): ground half extents (20, 0.5), top at y = 0.
+//                    (--no-cache: without the cache); in ch4/friction_ramp.cpp.
+// The landing is the built-in scene box-on-ground-tilted (docs/ch4-contact-model.md): ground half
+// extents (20, 0.5), top at y = 0, so `lamina run box-on-ground-tilted --explain K` and
+// `04_contact_model --explain K` explain the same step.
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "contact_views.h"
-#include "harness/format.h"
-#include "harness/plot.h"
-#include "harness/tutorial.h"
+#include "app/harness/format.h"
+#include "app/harness/plot.h"
+#include "app/harness/tutorial.h"
+#include "ch4/friction_ramp.h"
+#include "app/views/contact/stepped_world.h"
+#include "app/views/contact/world_explanation.h"
+#include "app/views/contact/world_view.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_world.h"
 
 namespace {
 
@@ -23,25 +30,25 @@ using namespace lamina;
 using tutorial::fixed;
 using Vec2r = render::Vec2;
 
-constexpr double dt = 1.0 / 60.0;       // Δt, in s (WorldSettings' default)
+constexpr double dt = 1.0 / 60.0;       // Δt, in s (the scenes' default)
 constexpr double g = 9.8;               // |g|, in m/s²
-constexpr double drop_tilt = 0.3;       // θ(0) of the dropped box, in rad
-const Vec3 drop_start(0.0, 2.0, 0.0);   // x(0) of the dropped box, in m
-const Material drop_material{0.6, 0.0}; // μ = 0.6, e = 0 (the Box2D comparison's)
 constexpr double force_scale = 0.1;     // arrow length per λ, in m per N
 constexpr double longest_force = 16.0;  // forces above this (landing impacts) are drawn cut, in N
 constexpr double at_rest = 1e-2;        // |v| (m/s) and |ω| (rad/s) below this count as resting
 
-WorldSettings with_cache(bool cache) {
-  WorldSettings settings;
-  settings.cache.enabled = cache;
-  return settings;
+// The docs' scene, the built-in box-on-ground-tilted: the ground (body 0), then the unit box of
+// 1 kg dropped from y = 2 m tilted by 0.3 rad (body 1), μ = 0.6, e = 0 (the Box2D comparison's).
+const Scene& drop_scene() {
+  static const Scene scene = builtin_scene("box-on-ground-tilted");
+  return scene;
 }
 
-// The docs' scene: the ground (body 0), then the unit box of 1 kg dropped tilted (body 1).
-void add_drop(World& world) {
-  world.add_static_box(20.0, 0.5, Vec3(0.0, -0.5, 0.0), 0.0, drop_material);
-  world.add_box(1.0, 0.5, 0.5, drop_start, drop_tilt, drop_material);
+const std::vector<std::string> drop_names{"ground", "box"};
+
+World drop_world(bool cache) {
+  WorldSettings settings = world_settings(drop_scene());
+  settings.cache.enabled = cache;
+  return build_world(drop_scene(), settings);
 }
 
 // How deep the box's lowest corner is below the ground's top y = 0, in m (0 when above).
@@ -66,31 +73,30 @@ void cut_arrow(render::Frame& frame, const Vec2r& from, const Vec2r& direction, 
 // surface, so the corner is near c + (C/2) n (exactly for a fresh point).
 Vec3 contact_corner(const ContactInfo& c) { return c.point + 0.5 * c.separation * c.normal; }
 
-// One run of the tilted drop and what the story has seen so far.
+// One run of the tilted drop and what the story has seen so far. It shows step k: the state at
+// t = k Δt with what step k solved from it.
 class DropRun {
  public:
-  explicit DropRun(bool cache) : cache_(cache), run_(with_cache(cache)) {
-    add_drop(run_.world());
-    run_.solve();
-    observe();
-  }
+  explicit DropRun(bool cache) : cache_(cache), run_(drop_world(cache)) { step(); }
 
   void step() {
-    run_.solve();
+    run_.step();
     observe();
   }
 
-  const tutorial::SolvedWorld& solved() const { return run_; }
+  tutorial::Explanation explain() const {
+    return view::explain_world_step(run_.world(), run_.report(), drop_names);
+  }
   bool cache() const { return cache_; }
 
   // Draws the ground-less part of the run (box, contacts, corner names), shifted by `dx` in x.
   void draw(render::Frame& frame, double dx, render::Colour colour) const {
     const Vec2r shift(dx, 0.0);
-    render::Body box = tutorial::body_view(run_, 1, tint(colour, 0.35));
+    render::Body box = view::body_view(box_at_t(), run_.world().shape(1), tint(colour, 0.35));
     box.centre += shift;
     frame.bodies.push_back(box);
-    for (const ContactInfo& c : run_.report().contacts) {
-      render::Contact view = tutorial::contact_view(c);
+    for (const ContactInfo& c : run_.report().contacts()) {
+      render::Contact view = view::contact_view(c);
       view.point += shift;
       cut_arrow(frame, view.point, view.normal, view.normal_force, "λ_n",
                 render::palette::bluish_green, Vec2r(0.08, 0.0));
@@ -106,7 +112,7 @@ class DropRun {
 
   // The run's numbers: pose, spin, and each contact with its C and λ.
   render::Panel panel(render::Corner corner, render::Colour colour) const {
-    const RigidBody& box = run_.bodies()[1];
+    const RigidBody& box = box_at_t();
     render::Panel p;
     p.corner = corner;
     p.title = cache_ ? "cache on" : "cache off";
@@ -115,7 +121,7 @@ class DropRun {
                    fixed(box.angular_velocity.z(), 2) + " rad/s",
                "penetration = " + fixed(1000.0 * penetration(box), 1) + " mm"};
     double total = 0.0, friction = 0.0;
-    for (const ContactInfo& c : run_.report().contacts) {
+    for (const ContactInfo& c : run_.report().contacts()) {
       p.lines.push_back(corner_name(c) + (c.cached ? " cached" : " fresh ") +
                         "  C = " + fixed(c.separation, 4) + " m  λ_n = " +
                         fixed(c.lambda_normal, 1) + " N  λ_t = " + fixed(c.lambda_tangent, 1) +
@@ -123,7 +129,7 @@ class DropRun {
       total += c.lambda_normal;
       friction += c.lambda_tangent;
     }
-    if (run_.report().contacts.empty()) p.lines.push_back("no contact: falling under m g");
+    if (run_.report().contacts().empty()) p.lines.push_back("no contact: falling under m g");
     p.lines.push_back("Σ λ_n = " + fixed(total, 2) + " N (m g = " + fixed(g, 2) + " N), Σ λ_t = " +
                       fixed(friction, 2) + " N");
     return p;
@@ -131,8 +137,8 @@ class DropRun {
 
   // The moment of the story the run is at, in the figures' words.
   std::string moment() const {
-    const std::vector<ContactInfo>& contacts = run_.report().contacts;
-    const RigidBody& box = run_.bodies()[1];
+    const std::vector<ContactInfo> contacts = run_.report().contacts();
+    const RigidBody& box = box_at_t();
     if (contacts.empty()) {
       return frames_in_contact_ == 0 ? "falling: no contact yet" : "in the air: no contact";
     }
@@ -158,9 +164,11 @@ class DropRun {
   }
 
  private:
+  const RigidBody& box_at_t() const { return run_.bodies_at_t()[1]; }
+
   // Which bottom corner of the box a contact is at, in the box's frame at t: −1 or +1.
   double corner_side(const ContactInfo& c) const {
-    const RigidBody& box = run_.bodies()[1];
+    const RigidBody& box = box_at_t();
     return std::copysign(1.0, (box.rotation.transpose() * (contact_corner(c) - box.x)).x());
   }
 
@@ -170,14 +178,14 @@ class DropRun {
   }
 
   void observe() {
-    const std::vector<ContactInfo>& contacts = run_.report().contacts;
+    const std::vector<ContactInfo> contacts = run_.report().contacts();
     if (contacts.empty()) return;
     if (frames_in_contact_ == 0) first_corner_ = corner_side(contacts[0]);
     ++frames_in_contact_;
   }
 
   bool cache_;
-  tutorial::SolvedWorld run_;
+  view::SteppedWorld run_;
   int frames_in_contact_ = 0;  // steps solved with at least one contact
   double first_corner_ = 0.0;  // side (−1, +1) of corner a, the first contact's
 };
@@ -208,7 +216,7 @@ class Landing : public tutorial::Scene {
     frame.legend_corner = render::Corner::top_right;
   }
 
-  tutorial::Explanation explain() const override { return tutorial::explain_solved(run_.solved()); }
+  tutorial::Explanation explain() const override { return run_.explain(); }
 
  private:
   render::Colour colour() const {
@@ -246,9 +254,8 @@ class CacheOnVsOff : public tutorial::Scene {
   }
 
   tutorial::Explanation explain() const override {
-    tutorial::Explanation e = titled("cache on · ", tutorial::explain_solved(runs_[0].solved()));
-    const tutorial::Explanation off =
-        titled("cache off · ", tutorial::explain_solved(runs_[1].solved()));
+    tutorial::Explanation e = titled("cache on · ", runs_[0].explain());
+    const tutorial::Explanation off = titled("cache off · ", runs_[1].explain());
     e.insert(e.end(), off.begin(), off.end());
     return e;
   }
@@ -256,15 +263,14 @@ class CacheOnVsOff : public tutorial::Scene {
   // penetration.png over 4 s, whatever --frames rendered.
   void write_data(const std::filesystem::path& folder) const override {
     constexpr int steps = 240;
-    std::array<World, 2> worlds{World(with_cache(true)), World(with_cache(false))};
-    for (World& w : worlds) add_drop(w);
+    std::array<World, 2> worlds{drop_world(true), drop_world(false)};
     std::vector<std::vector<double>> rows;
     for (int s = 0; s <= steps; ++s) {
       if (s > 0) {
         for (World& w : worlds) w.step();
       }
       rows.push_back({s * dt, 1000.0 * penetration(worlds[0].bodies()[1]),
-                      1000.0 * penetration(worlds[1].bodies()[1]), 1000.0 * with_cache(true).contact.slop});
+                      1000.0 * penetration(worlds[1].bodies()[1]), 1000.0 * worlds[0].settings().contact.slop});
     }
     tutorial::write_plot(folder, {"penetration",
                                   "Tilted box landing: its deepest corner below the ground",
@@ -281,98 +287,6 @@ class CacheOnVsOff : public tutorial::Scene {
   std::array<DropRun, 2> runs_;
 };
 
-// A box on a ramp of angle θ: it sticks when tan θ < μ and slides at g (sin θ − μ cos θ) else.
-struct Ramp {
-  double theta;          // θ, in rad
-  Vec3 centre;           // the ramp's centre, in m
-  render::Colour colour;
-  render::Corner corner;  // where its panel goes
-};
-
-class FrictionRamp : public tutorial::Scene {
- public:
-  static constexpr double mu = 0.5;          // μ of both materials, so the pair's √(μ1 μ2) = 0.5
-  static constexpr double half_length = 2.6; // ramp half length, in m
-  static constexpr double half_thickness = 0.15;
-  static constexpr double start = 1.6;       // the box's start up the slope from the centre, in m
-  inline static const Vec2r box_half{0.35, 0.25};
-
-  explicit FrictionRamp(const tutorial::Options& o)
-      : ramps_{Ramp{20.0 * M_PI / 180.0, Vec3(-3.4, 0.6, 0.0), render::palette::bluish_green,
-                    render::Corner::bottom_left},
-               Ramp{35.0 * M_PI / 180.0, Vec3(3.4, 0.8, 0.0), render::palette::vermillion,
-                    render::Corner::bottom_right}},
-        world_(with_cache(!o.no_cache)) {
-    const Material material{mu, 0.0};
-    for (const Ramp& r : ramps_) {
-      world_.world().add_static_box(half_length, half_thickness, r.centre, r.theta, material);
-      const Vec3 up_slope(std::cos(r.theta), std::sin(r.theta), 0.0);
-      const Vec3 normal(-std::sin(r.theta), std::cos(r.theta), 0.0);
-      world_.world().add_box(1.0, box_half.x(), box_half.y(),
-                             r.centre + start * up_slope + (half_thickness + box_half.y()) * normal,
-                             r.theta, material);
-    }
-    world_.solve();
-  }
-
-  tutorial::SceneInfo info() const override {
-    return {"friction_ramp", dt, 90, 1, {Vec2r(-6.4, -2.3), Vec2r(6.4, 3.2)}};
-  }
-  void step() override { world_.solve(); }
-
-  void draw(render::Frame& frame) const override {
-    frame.caption = "Friction rows, bounds ±μ λc: sticks when tan θ < μ, slides when tan θ > μ";
-    frame.force_scale = 0.35;
-    for (std::size_t i = 0; i < ramps_.size(); ++i) {
-      const int ramp = static_cast<int>(2 * i), box = ramp + 1;
-      frame.bodies.push_back(tutorial::body_view(world_, ramp, render::palette::grid));
-      frame.bodies.push_back(tutorial::body_view(world_, box, tint(ramps_[i].colour, 0.35)));
-      frame.panels.push_back(panel(i));
-    }
-    for (const ContactInfo& c : world_.report().contacts) {
-      frame.contacts.push_back(tutorial::contact_view(c));
-    }
-    frame.legend_corner = render::Corner::top_left;
-  }
-
-  tutorial::Explanation explain() const override { return tutorial::explain_solved(world_); }
-
- private:
-  render::Panel panel(std::size_t i) const {
-    const Ramp& r = ramps_[i];
-    const int box = static_cast<int>(2 * i + 1);
-    const Vec3 down_slope(-std::cos(r.theta), -std::sin(r.theta), 0.0);
-    const RigidBody& at_t = world_.bodies()[static_cast<std::size_t>(box)];
-    const RigidBody& after = world_.world().bodies()[static_cast<std::size_t>(box)];
-    const double measured = (after.v - at_t.v).dot(down_slope) / dt;
-    // The text's sliding box: m a = m g sin θ − μ m g cos θ along the slope.
-    const double predicted = g * (std::sin(r.theta) - mu * std::cos(r.theta));
-    double normal = 0.0, friction = 0.0;
-    for (const ContactInfo& c : world_.report().contacts) {
-      if (c.bodies.second != box) continue;
-      normal += c.lambda_normal;
-      friction += c.lambda_tangent;
-    }
-    const bool slides = std::tan(r.theta) > mu;
-    render::Panel p;
-    p.corner = r.corner;
-    p.title = "θ = " + fixed(r.theta * 180.0 / M_PI, 0) + "°: tan θ = " +
-              fixed(std::tan(r.theta), 3) + (slides ? " > μ = " : " < μ = ") + fixed(mu, 1) +
-              (slides ? ", slides" : ", sticks");
-    p.title_colour = r.colour;
-    p.lines = {"g (sin θ − μ cos θ) = " + fixed(predicted, 3) + " m/s²" +
-                   (slides ? "" : " < 0: friction holds"),
-               "a along the slope = " + fixed(measured, 3) + " m/s² (solved)",
-               "v along the slope = " + fixed(after.v.dot(down_slope), 3) + " m/s",
-               "|Σ λ_t| = " + fixed(std::abs(friction), 3) + " N,  μ Σ λ_n = " +
-                   fixed(mu * normal, 3) + " N"};
-    return p;
-  }
-
-  std::array<Ramp, 2> ramps_;
-  tutorial::SolvedWorld world_;
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -387,6 +301,5 @@ int main(int argc, char** argv) {
   return tutorial::run_tutorial(
       argc, argv, info,
       {[](const tutorial::Options& o) { return std::make_unique<Landing>(o); },
-       tutorial::scene<CacheOnVsOff>(),
-       [](const tutorial::Options& o) { return std::make_unique<FrictionRamp>(o); }});
+       tutorial::scene<CacheOnVsOff>(), ch4::friction_ramp_scene()});
 }

@@ -10,10 +10,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "contact_views.h"
-#include "harness/format.h"
-#include "harness/plot.h"
-#include "harness/tutorial.h"
+#include "app/harness/format.h"
+#include "app/harness/plot.h"
+#include "app/harness/tutorial.h"
+#include "app/views/contact/stepped_world.h"
+#include "app/views/contact/world_explanation.h"
+#include "app/views/contact/world_view.h"
 
 namespace {
 
@@ -36,11 +38,13 @@ WorldSettings text_settings() {
 }
 
 // Fig 5-1: the ground B (body 0) and box A (body 1) with corner a `depth` into the ground.
-void add_walkthrough(World& world) {
+World walkthrough_world() {
+  World world(text_settings());
   const Material frictionless{0.0, 0.0};
   world.add_static_box(20.0, 0.5, Vec3(0.0, -0.5, 0.0), 0.0, frictionless);
   const double lowest = 0.5 * std::cos(tilt) + 0.5 * std::sin(tilt);  // corner a below x1
   world.add_box(1.0, 0.5, 0.5, Vec3(0.0, lowest - depth, 0.0), tilt, frictionless);
+  return world;
 }
 
 // A number for J's entries: "0" for an exact zero, else 4 significant digits.
@@ -81,28 +85,22 @@ bool clip(Vec2r& a, Vec2r& b, const Vec2r& centre, double half) {
 
 class Walkthrough : public tutorial::Scene {
  public:
-  Walkthrough() : run_(text_settings()) {
-    add_walkthrough(run_.world());
-    run_.solve();
-  }
+  Walkthrough() : run_(walkthrough_world()) { run_.step(); }
 
   tutorial::SceneInfo info() const override {
-    return {"walkthrough", run_.world().settings().dt, 120, 1,
+    return {"walkthrough", run_.world().settings().step.dt, 120, 1,
             {Vec2r(-3.45, -0.42), Vec2r(0.95, 2.0)}};
   }
-  void step() override {
-    ++step_;
-    run_.solve();
-  }
+  void step() override { run_.step(); }
 
   void draw(render::Frame& frame) const override {
     frame.caption = "Ch 5 walk-through · " + moment();
     frame.force_scale = 0.05;
     frame.grounds.push_back({Vec2r::Zero(), Vec2r::UnitY()});
-    frame.bodies.push_back(tutorial::body_view(run_, 1, tint(render::palette::sky_blue, 0.35)));
-    for (std::size_t i = 0; i < run_.report().contacts.size(); ++i) {
-      const ContactInfo& c = run_.report().contacts[i];
-      frame.contacts.push_back(tutorial::contact_view(c));
+    frame.bodies.push_back(view::body_view(box(), run_.world().shape(1), tint(render::palette::sky_blue, 0.35)));
+    for (std::size_t i = 0; i < run_.report().contacts().size(); ++i) {
+      const ContactInfo c = run_.report().contacts()[i];
+      frame.contacts.push_back(view::contact_view(c));
       const bool a = corner_name(i) == "a";
       frame.labels.push_back({c.point.head<2>() + Vec2r(a ? -0.06 : 0.06, -0.13),
                               corner_name(i) + ": λ = " + fixed(c.lambda_normal, 2) + " N",
@@ -115,22 +113,21 @@ class Walkthrough : public tutorial::Scene {
   }
 
   tutorial::Explanation explain() const override {
-    tutorial::Explanation e = tutorial::explain_solved(run_);
+    tutorial::Explanation e = view::explain_world_step(run_.world(), run_.report(), {"ground B", "box A"});
     e.insert(e.begin(), walkthrough_section());
     return e;
   }
 
   // normal_force.png: Σ λ over 2 s against m g.
   void write_data(const std::filesystem::path& folder) const override {
-    World world(text_settings());
-    add_walkthrough(world);
-    const double dt = world.settings().dt;
-    const double weight = world.bodies()[1].mass * -world.settings().gravity.y();
+    World world = walkthrough_world();
+    const double dt = world.settings().step.dt;
+    const double weight = world.bodies()[1].mass * -world.settings().step.gravity.y();
     std::vector<std::vector<double>> rows;
     for (int s = 0; s < 120; ++s) {
       WorldReport report;
       world.step(report);
-      const Vec6 wrench = constraint_wrench(report.velocity, 1);
+      const Vec6 wrench = report.velocity.constraint_wrench(1);
       rows.push_back({s * dt, wrench[1], wrench[5], weight});
     }
     tutorial::write_plot(folder, {"normal_force",
@@ -144,14 +141,16 @@ class Walkthrough : public tutorial::Scene {
   }
 
  private:
-  const RigidBody& box() const { return run_.bodies()[1]; }
+  const RigidBody& box() const { return run_.bodies_at_t()[1]; }
+  long step_index() const { return run_.step_index(); }  // steps since τ
+  const Contact& contact(std::size_t i) const { return run_.report().pairs.at(0).contacts.at(i); }
 
   bool resting() const {
-    return step_ > 2 && box().v.norm() < at_rest && std::abs(box().angular_velocity.z()) < at_rest;
+    return step_index() > 2 && box().v.norm() < at_rest && std::abs(box().angular_velocity.z()) < at_rest;
   }
 
   std::string moment() const {
-    switch (step_) {
+    switch (step_index()) {
       case 0: return "t = τ: one row, the deepest corner a (eq. 5-1..5-11)";
       case 1: return "t = τ + Δt: a from the cache, b fresh, J is 2 × 12 (eq. 5-12..5-21)";
       case 2: return "t = τ + 2Δt: both corners again, the forces nearly equal";
@@ -163,7 +162,7 @@ class Walkthrough : public tutorial::Scene {
 
   // r = R1ᵀ (x − x1) of contact i, the anchor the cache keeps in the box's frame (eq. 5-12).
   Vec3 anchor(std::size_t i) const {
-    const Vec2 r = run_.world().contact_pairs().at(0).contacts.at(i).anchor[1];
+    const Vec2 r = contact(i).anchor[1];
     return Vec3(r.x(), r.y(), 0.0);
   }
 
@@ -175,7 +174,7 @@ class Walkthrough : public tutorial::Scene {
 
   // The index of the contact at corner `side` (−1: a, +1: b), or −1.
   int contact_at(double side) const {
-    for (std::size_t i = 0; i < run_.report().contacts.size(); ++i) {
+    for (std::size_t i = 0; i < run_.report().contacts().size(); ++i) {
       if ((corner_name(i) == "a") == (side < 0.0)) return static_cast<int>(i);
     }
     return -1;
@@ -207,7 +206,8 @@ class Walkthrough : public tutorial::Scene {
     }
     std::string text;
     if (const int i = contact_at(side); i >= 0) {
-      const ContactInfo* c = &run_.report().contacts[static_cast<std::size_t>(i)];
+      const ContactInfo contact = run_.report().contacts()[static_cast<std::size_t>(i)];
+      const ContactInfo* c = &contact;
       const Vec2r at = map(c->point);
       frame.paths.push_back({{at + Vec2r(-0.03, 0.0), at + Vec2r(0.03, 0.0)},
                              render::palette::vermillion, false});
@@ -230,29 +230,29 @@ class Walkthrough : public tutorial::Scene {
 
   // The text's J row of a contact: the box block [Nᵀ ((x − x1) × N)ᵀ], then the ground's 0ᵀ 0ᵀ.
   std::string j_row(std::size_t i) const {
-    const ConstraintRow& row = run_.report().velocity.mlcp.rows.at(i);
+    const Vec6 box_block = run_.report().velocity.mlcp.jacobian(contact(i).row, 0);
     std::string text = "[";
-    for (int c = 0; c < 6; ++c) text += (c ? " " : "") + entry(row.Jsp[0][c]);
+    for (int c = 0; c < 6; ++c) text += (c ? " " : "") + entry(box_block[c]);
     return text + " | 0 0 0 0 0 0]";
   }
 
   render::Panel panel() const {
     const WorldReport& report = run_.report();
-    const double beta = run_.world().settings().contact.beta;
-    const Vec6 wrench = constraint_wrench(report.velocity, 1);
+    const double beta = run_.world().settings().step.beta;
+    const Vec6 wrench = report.velocity.constraint_wrench(1);
+    const int rows = report.velocity.mlcp.row_count();
     render::Panel p;
     p.corner = render::Corner::top_left;
-    p.title = "step " + std::to_string(step_) + ": rows s = " +
-              std::to_string(report.velocity.mlcp.rows.size()) + ", J is " +
-              std::to_string(report.velocity.mlcp.rows.size()) + " × 12";
+    p.title = "step " + std::to_string(step_index()) + ": rows s = " + std::to_string(rows) +
+              ", J is " + std::to_string(rows) + " × 12";
     p.lines = {"M⁻¹ = diag(m1⁻¹E, I1⁻¹, 0, 0): m1⁻¹ = " + fixed(box().inverse_mass, 1) +
                    ", I1⁻¹ = " + fixed(box().inverse_inertia_world(2, 2), 1) + "  (5-1)",
                "F_ext = [m1 g, 0, 0, 0], m1 g = " +
-                   pair_text(box().mass * run_.world().settings().gravity, 1) + " N  (5-2)",
+                   pair_text(box().mass * run_.world().settings().step.gravity, 1) + " N  (5-2)",
                "V: v1 = " + pair_text(box().v, 4) + " m/s, ω1 = " +
                    fixed(box().angular_velocity.z(), 4) + " rad/s  (5-3)"};
-    for (std::size_t i = 0; i < report.contacts.size(); ++i) {
-      const ContactInfo& c = report.contacts[i];
+    for (std::size_t i = 0; i < report.contacts().size(); ++i) {
+      const ContactInfo c = report.contacts()[i];
       const std::string n = corner_name(i);
       const double epsilon = std::min(c.separation, 0.0);
       p.lines.push_back(n + (c.cached ? " cached" : " fresh") + ": x_" + n + " = " +
@@ -261,7 +261,7 @@ class Walkthrough : public tutorial::Scene {
       p.lines.push_back("  ε = " + fixed(epsilon, 5) + " m, ζ = −β ε = " +
                         fixed(-beta * epsilon, 5) + " m  (5-6)");
       p.lines.push_back("  J = " + j_row(i) + "  (5-8)");
-      p.lines.push_back("  λ = " + fixed(report.velocity.solution.lambda[static_cast<Eigen::Index>(i)], 4) +
+      p.lines.push_back("  λ = " + fixed(report.velocity.solution.lambda[contact(i).row], 4) +
                         " N  (5-9..5-11, 5-21)");
     }
     p.lines.push_back("f_c1 = " + pair_text(Vec3(wrench.head<3>()), 4) + " N, τ_c1 = " +
@@ -273,12 +273,12 @@ class Walkthrough : public tutorial::Scene {
   // The text's quantities of this step, for --explain.
   tutorial::Section walkthrough_section() const {
     const WorldReport& report = run_.report();
-    const double beta = run_.world().settings().contact.beta;
-    const Vec6 wrench = constraint_wrench(report.velocity, 1);
+    const double beta = run_.world().settings().step.beta;
+    const Vec6 wrench = report.velocity.constraint_wrench(1);
     tutorial::Section s{"walk-through (the text has z up, N = (0, 0, 1); Lamina y up, N = (0, 1, 0))",
                         {}};
-    for (std::size_t i = 0; i < report.contacts.size(); ++i) {
-      const ContactInfo& c = report.contacts[i];
+    for (std::size_t i = 0; i < report.contacts().size(); ++i) {
+      const ContactInfo c = report.contacts()[i];
       const std::string n = corner_name(i);
       const double epsilon = std::min(c.separation, 0.0);
       s.quantities.push_back({"x_" + n, "5-12", c.cached ? "corner x1 + R1 r, re-placed from the cache"
@@ -295,8 +295,7 @@ class Walkthrough : public tutorial::Scene {
     return s;
   }
 
-  tutorial::SolvedWorld run_;
-  long step_ = 0;              // steps since τ
+  view::SteppedWorld run_;
 };
 
 }  // namespace

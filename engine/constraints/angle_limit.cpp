@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "constraints/jacobian_rows.h"
+#include "kinematics/require.h"
 
 namespace lamina {
 
@@ -10,8 +11,8 @@ AngleLimit::AngleLimit(int body_a, int body_b, double limit, LimitSide side)
     : body_a_(body_a), body_b_(body_b), limit_(limit), side_(side) {
   const std::string what = "angle limit";
   require_body_pair(body_a, body_b, what);
-  require_input(std::isfinite(limit) && limit > -M_PI && limit <= M_PI, what,
-                "limit must lie in (−π, π], got " + std::to_string(limit));
+  require(std::isfinite(limit) && limit > -M_PI && limit <= M_PI,
+          what + ": limit must lie in (−π, π], got " + std::to_string(limit));
 }
 
 void AngleLimit::write_rows(const std::vector<RigidBody>& bodies, double dt, double beta,
@@ -20,7 +21,7 @@ void AngleLimit::write_rows(const std::vector<RigidBody>& bodies, double dt, dou
   const Quat relative = orientation_of(bodies, body_a_).conjugate() * orientation_of(bodies, body_b_);
   // eq. 3-17: C = s (θ − θ_L) ≥ 0
   const double C = s * (planar_angle(relative) - limit_);
-  ConstraintRow row = angular_row(body_a_, body_b_, s * Vec3::UnitZ());
+  ConstraintRow row = angular_row(bodies, body_a_, body_b_, s * Vec3::UnitZ());
   // eq. 3-18, 3-19, 3-14
   row.zeta = inequality_bias(C, dt, beta);
   // eq. 3-26 (ii): a one-sided row

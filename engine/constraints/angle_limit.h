@@ -30,6 +30,8 @@ class AngleLimit final : public Constraint {
   // One inequality row, bounds [0, ∞).
   void write_rows(const std::vector<RigidBody>& bodies, double dt, double beta,
                   std::vector<ConstraintRow>& rows) const override;
+  const char* kind() const override { return "angle limit"; }
+  std::array<int, 2> bodies() const override { return {body_a_, body_b_}; }
 
  private:
   int body_a_;     // the reference body, or world

@@ -10,6 +10,8 @@
 // layout gives the same numbers, bit for bit.
 #pragma once
 
+#include <array>
+
 #include "kinematics/math_types.h"
 
 namespace lamina {
@@ -55,6 +57,17 @@ template <>
 inline double ordered_dot<3>(const Block<3>& x, const Block<3>& y) {
   // (x_0 y_0 + x_1 y_1) + x_2 y_2: the first two as one pair of lanes, the same sum
   return x.head<2>().dot(y.head<2>()) + x[2] * y[2];
+}
+
+// J_i · X for a row's two blocks and two per-body vectors (the text's Multiply, one row): the
+// second block only when the row has a second body (Jmap[1] ≥ 0), so a one-body row never reads
+// a missing body's vector. Every J V, J a and J u of the engine is this sum.
+template <int N>
+double row_dot(const std::array<Block<N>, 2>& J, const Block<N>& x0, const Block<N>& x1,
+               bool two_bodies) {
+  double sum = ordered_dot<N>(J[0], x0);
+  if (two_bodies) sum += ordered_dot<N>(J[1], x1);
+  return sum;
 }
 
 }  // namespace lamina

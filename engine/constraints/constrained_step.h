@@ -16,15 +16,14 @@
 #include "constraints/constraint.h"
 #include "constraints/pgs_solver.h"
 #include "constraints/step_report.h"
+#include "constraints/step_settings.h"
 #include "motion/integrator.h"
 
 namespace lamina {
 
 struct ConstrainedStepSettings {
-  double dt = 1.0 / 60.0;                   // Δt, in s
-  double beta = 0.2;                        // β, fraction of the error C removed per step (eq. 3-14)
-  Vec3 gravity = Vec3(0.0, -9.8, 0.0);      // g, in m/s²; y is up
-  PgsSettings pgs;                          // sweeps and tolerance of the solver
+  StepSettings step;                        // g, Δt, β and the PGS sweeps
+  double tolerance = 0.0;                   // stop PGS once ‖W‖ ≤ this; 0 runs every sweep
   bool warm_start = true;                   // start PGS from last step's λ when the rows match
   Integration scheme = Integration::semi_implicit;  // eq. 2-5 or its explicit variant
 };
@@ -34,15 +33,13 @@ struct WarmStart {
   std::vector<std::array<int, 2>> Jmap;  // last step's rows' body pairs, in row order
   Eigen::VectorXd lambda;                // last step's λ, in N or N·m
 
-  // λ_exp for these rows: last step's λ if the rows are on the same bodies in the same order
-  // (the same constraints), else zeros.
-  Eigen::VectorXd guess(const std::vector<ConstraintRow>& rows) const;
-  // The same guess appended to `out`, without a temporary (a World step allocates nothing).
-  void append_guess(const std::vector<ConstraintRow>& rows, std::vector<double>& out) const;
-  // Keeps the rows' body pairs and their λ for the next step (λ read in place, e.g. through an
-  // Eigen::Map).
-  void remember(const std::vector<ConstraintRow>& rows,
-                const Eigen::Ref<const Eigen::VectorXd>& solved);
+  // λ_exp for rows [first, last): last step's λ if the rows are on the same bodies in the same
+  // order (the same constraints), else zeros, appended to `out` (a World step allocates nothing).
+  void append_guess(const ConstraintRow* first, const ConstraintRow* last,
+                    std::vector<double>& out) const;
+  // Keeps rows [first, last)'s body pairs and their λ (solved[0 .. last − first)) for the next
+  // step.
+  void remember(const ConstraintRow* first, const ConstraintRow* last, const double* solved);
 };
 
 // Advances the bodies by one step under gravity, the forces already accumulated on them, and the

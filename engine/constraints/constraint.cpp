@@ -1,6 +1,6 @@
 #include "constraints/constraint.h"
 
-#include <stdexcept>
+#include "kinematics/require.h"
 
 namespace lamina {
 
@@ -15,17 +15,13 @@ double inequality_bias(double C, double dt, double beta) {
   return equality_bias(C, dt, beta);
 }
 
-void require_input(bool ok, const std::string& what, const std::string& message) {
-  if (!ok) throw std::invalid_argument(what + ": " + message);
-}
-
 void require_body_pair(int body_a, int body_b, const std::string& what) {
-  require_input(body_a >= -1 && body_b >= -1, what,
-                "body indices must be ≥ 0 or −1 (world), got " + std::to_string(body_a) + " and " +
-                    std::to_string(body_b));
-  require_input(body_a != body_b, what,
-                "needs two different bodies (or a body and the world), got " +
-                    std::to_string(body_a) + " twice");
+  require(body_a >= world && body_b >= world,
+          what + ": body indices must be ≥ 0 or −1 (world), got " + std::to_string(body_a) +
+              " and " + std::to_string(body_b));
+  require(body_a != body_b, what + ": needs two different bodies (or a body and the world), got " +
+                                (body_a == world ? std::string("the world") : "body " + std::to_string(body_a)) +
+                                " twice");
 }
 
 std::vector<ConstraintRow> write_all_rows(const std::vector<RigidBody>& bodies,

@@ -14,11 +14,14 @@
 //              ζ = −C / Δt (eq. 3-18 with eq. 2-5); for C ≤ 0, ζ = −β C / Δt as above.
 #pragma once
 
+#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "constraints/constraint_row.h"
+#include "constraints/jacobian_rows.h"
 #include "motion/rigid_body.h"
 
 namespace lamina {
@@ -31,6 +34,13 @@ class Constraint {
   // same bodies, every step, so that the solver can warm start from the last step's λ.
   virtual void write_rows(const std::vector<RigidBody>& bodies, double dt, double beta,
                           std::vector<ConstraintRow>& rows) const = 0;
+  // What it is, in a few words: "revolute joint", "distance constraint", ...
+  virtual const char* kind() const = 0;
+  // The two bodies it joins, each an index into the bodies or world (−1).
+  virtual std::array<int, 2> bodies() const = 0;
+  // Its two ends, where it is drawn as a link with a pin at each end (a rod, a pin joint);
+  // nothing for a constraint without ends (an angle limit, an incline).
+  virtual std::optional<std::array<Anchor, 2>> ends() const { return std::nullopt; }
 };
 
 using ConstraintList = std::vector<std::unique_ptr<Constraint>>;
@@ -40,9 +50,6 @@ double equality_bias(double C, double dt, double beta);
 
 // ζ of a row C ≥ 0 (eq. 3-17..3-19): −C/Δt while C > 0, −β C / Δt once C ≤ 0.
 double inequality_bias(double C, double dt, double beta);
-
-// Throws std::invalid_argument("<what>: <message>") unless ok; constructors check their input.
-void require_input(bool ok, const std::string& what, const std::string& message);
 
 // Checks the bodies of a two-body constraint: each an index ≥ 0 or world (−1), not the same
 // body twice, not both the world.

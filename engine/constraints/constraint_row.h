@@ -31,4 +31,11 @@ struct ConstraintRow {
   bool is_one_body() const { return Jmap[1] < 0; }
 };
 
+// Where a contact pair's or a joint's rows sit among a step's rows: first .. first + count − 1.
+// Recorded when the rows are written and read back from there (the row map), never re-derived.
+struct RowRange {
+  int first = 0;  // the index of the first row
+  int count = 0;  // how many rows
+};
+
 }  // namespace lamina

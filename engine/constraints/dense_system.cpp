@@ -11,14 +11,15 @@ Eigen::VectorXd stacked(const std::vector<RigidBody>& bodies, PerBody per_body) 
   return result;
 }
 
-// An s × 6n matrix from per-row sparse blocks: row i holds block(i, k) in body Jmap[i][k]'s six
+// An s × 6n matrix from per-row sparse blocks: row i holds block(i, k) in body Jmap(i)[k]'s six
 // columns ("Computing Jacobian"), and zeros elsewhere.
-template <class Block>
-Eigen::MatrixXd scatter(const std::vector<ConstraintRow>& rows, int body_count, Block block) {
-  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows.size()), 6 * body_count);
-  for (size_t i = 0; i < rows.size(); ++i) {
+template <class Jmap, class Block>
+Eigen::MatrixXd scatter(int row_count, int body_count, Jmap jmap, Block block) {
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(row_count, 6 * body_count);
+  for (int i = 0; i < row_count; ++i) {
     for (int k = 0; k < 2; ++k) {
-      if (rows[i].Jmap[k] >= 0) m.block<1, 6>(i, 6 * rows[i].Jmap[k]) += block(i, k).transpose();
+      const int body = jmap(i)[k];
+      if (body >= 0) m.block<1, 6>(i, 6 * body) += block(i, k).transpose();
     }
   }
   return m;
@@ -47,12 +48,23 @@ Eigen::MatrixXd dense_inverse_mass(const std::vector<RigidBody>& bodies) {
 
 Eigen::MatrixXd dense_jacobian(const std::vector<ConstraintRow>& rows, int body_count) {
   // eq. 3-8
-  return scatter(rows, body_count, [&](size_t i, int k) { return rows[i].Jsp[k]; });
+  return scatter(
+      static_cast<int>(rows.size()), body_count, [&](int i) { return rows[i].Jmap; },
+      [&](int i, int k) { return rows[i].Jsp[k]; });
+}
+
+Eigen::MatrixXd dense_jacobian(const Mlcp& mlcp) {
+  // eq. 3-8
+  return scatter(
+      mlcp.row_count(), mlcp.body_count(), [&](int i) { return mlcp.bodies_of(i); },
+      [&](int i, int k) { return mlcp.jacobian(i, k); });
 }
 
 Eigen::MatrixXd dense_b_transpose(const Mlcp& mlcp) {
   // the text's Convert: Bᵀ = J M⁻¹, block by block
-  return scatter(mlcp.rows, mlcp.body_count, [&](size_t i, int k) { return mlcp.Bsp[i][k]; });
+  return scatter(
+      mlcp.row_count(), mlcp.body_count(), [&](int i) { return mlcp.bodies_of(i); },
+      [&](int i, int k) { return mlcp.b_block(i, k); });
 }
 
 DenseSystem build_dense_system(const std::vector<RigidBody>& bodies,

@@ -8,8 +8,12 @@
 //   J B    s × s    J M⁻¹ Jᵀ                              (eq. 3-16)
 //   η      s × 1    ζ/Δt − J (V/Δt + M⁻¹ F_ext)           (eq. 3-16)
 //
-// The solver never builds these (they are mostly zeros, see "Computing Jacobian"); tests use
-// them to check the sparse path, and tutorials print them in their step-through output.
+// The solver never builds these (they are mostly zeros, see "Computing Jacobian"). Two kinds of
+// function make them:
+//   - views of the one assembled MLCP (mlcp.h), for explanations: dense_jacobian(mlcp),
+//     dense_b_transpose(mlcp);
+//   - build_dense_system, from the written rows by matrix products alone, sharing none of the
+//     MLCP's assembly: the independent reference the tests check that assembly against.
 #pragma once
 
 #include <vector>
@@ -42,7 +46,9 @@ Eigen::MatrixXd dense_inverse_mass(const std::vector<RigidBody>& bodies);
 // eq. 3-8: the full s × 6n Jacobian of the sparse rows.
 Eigen::MatrixXd dense_jacobian(const std::vector<ConstraintRow>& rows, int body_count);
 
-// Bᵀ = J M⁻¹ (s × 6n) from an assembled MLCP's sparse Bsp (the text's Convert).
+// J (s × 6n) and Bᵀ = J M⁻¹ (s × 6n, the text's Convert) of an assembled MLCP, from its
+// sparse Jsp and Bsp.
+Eigen::MatrixXd dense_jacobian(const Mlcp& mlcp);
 Eigen::MatrixXd dense_b_transpose(const Mlcp& mlcp);
 
 // J, M⁻¹, J M⁻¹ Jᵀ, ζ and η of the rows for the bodies' current state and accumulated forces.

@@ -1,6 +1,9 @@
 #include "constraints/distance_constraint.h"
 
 #include <cmath>
+#include <string>
+
+#include "kinematics/require.h"
 
 namespace lamina {
 
@@ -8,9 +11,11 @@ DistanceConstraint::DistanceConstraint(const Anchor& a, const Anchor& b, double 
     : a_(a), b_(b), length_(length) {
   const std::string what = "distance constraint";
   require_body_pair(a.body, b.body, what);
-  require_input(a.local.allFinite() && b.local.allFinite(), what, "an anchor is not finite");
-  require_input(std::isfinite(length) && length > 0.0, what,
-                "length L must be finite and positive, got " + std::to_string(length));
+  require(a.local.allFinite() && b.local.allFinite(), what + ": an anchor is not finite");
+  // A rod of length 0 has no direction u = d/|d| to hold
+  require(std::isfinite(length) && length > 0.0,
+          what + ": the rod's two ends coincide or its length L is not finite and positive: a rod "
+                 "needs a length (a revolute joint pins two bodies at one point)");
 }
 
 void DistanceConstraint::write_rows(const std::vector<RigidBody>& bodies, double dt, double beta,

@@ -23,6 +23,9 @@ class DistanceConstraint final : public Constraint {
   // One equality row.
   void write_rows(const std::vector<RigidBody>& bodies, double dt, double beta,
                   std::vector<ConstraintRow>& rows) const override;
+  const char* kind() const override { return "distance constraint"; }
+  std::array<int, 2> bodies() const override { return {a_.body, b_.body}; }
+  std::optional<std::array<Anchor, 2>> ends() const override { return std::array{a_, b_}; }
 
  private:
   Anchor a_;       // the first end

@@ -7,18 +7,19 @@
 //   residual ‖A λ − b‖, which tends to 0 for positive definite A (the text cites Ren-Cang Li)
 //
 // Projected Gauss-Seidel (pgs_solver.h) is this sweep with each λ_i clamped to its bounds and
-// A λ kept implicitly as a = B λ; this dense version is its reference.
+// A λ kept implicitly as a = B λ. This dense version is its independent reference: it shares
+// no code with the solver it checks, only the settings and result types.
 #pragma once
 
 #include <Eigen/Core>
 
-#include "constraints/pgs_solver.h"
+#include "constraints/sweep_settings.h"
 
 namespace lamina {
 
 // Solves A λ = b from λ_exp. settings.iterations caps the sweeps; settings.tolerance (if > 0)
 // stops once ‖A λ − b‖ ≤ tolerance; record_residuals keeps ‖A λ − b‖ after every sweep.
-PgsResult gauss_seidel(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
-                       const Eigen::VectorXd& lambda_exp, const PgsSettings& settings);
+SweepResult gauss_seidel(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                         const Eigen::VectorXd& lambda_exp, const SweepSettings& settings);
 
 }  // namespace lamina

@@ -3,16 +3,17 @@
 #include <cmath>
 
 #include "constraints/jacobian_rows.h"
+#include "kinematics/require.h"
 
 namespace lamina {
 
 InclineConstraint::InclineConstraint(int body, const Vec3& p, const Vec3& normal)
     : body_(body), p_(p), normal_(normal) {
   const std::string what = "incline constraint";
-  require_input(body >= 0, what, "needs a body index ≥ 0, got " + std::to_string(body));
-  require_input(p.allFinite(), what, "point p is not finite");
-  require_input(normal.allFinite() && std::abs(normal.norm() - 1.0) <= 1e-9, what,
-                "normal N must be a unit vector, |N| = " + std::to_string(normal.norm()));
+  require(body >= 0, what + ": needs a body index ≥ 0, got " + std::to_string(body));
+  require(p.allFinite(), what + ": point p is not finite");
+  require(normal.allFinite() && std::abs(normal.norm() - 1.0) <= 1e-9,
+          what + ": normal N must be a unit vector, |N| = " + std::to_string(normal.norm()));
 }
 
 void InclineConstraint::write_rows(const std::vector<RigidBody>& bodies, double dt, double beta,

@@ -21,6 +21,8 @@ class InclineConstraint final : public Constraint {
   // One equality row.
   void write_rows(const std::vector<RigidBody>& bodies, double dt, double beta,
                   std::vector<ConstraintRow>& rows) const override;
+  const char* kind() const override { return "incline constraint"; }
+  std::array<int, 2> bodies() const override { return {world, body_}; }
 
  private:
   int body_;     // the body held, an index into the bodies

@@ -5,35 +5,18 @@
 namespace lamina {
 namespace {
 
-// The arm r = p − x of an anchor: zero for the world, whose "velocity" is zero anyway.
-Vec3 arm(const std::vector<RigidBody>& bodies, const Anchor& anchor) {
+// Adds body b, which holds a block, as the next end.
+void add_end(int body, double sign, const Vec3& lever, RowEnds& ends) {
+  ends.body[ends.count] = body;
+  ends.sign[ends.count] = sign;
+  ends.lever[ends.count++] = lever;
+}
+
+// The lever r = R r0 of an anchor: zero for the world, whose velocity is zero anyway.
+Vec3 lever_of(const std::vector<RigidBody>& bodies, const Anchor& anchor) {
   assert(anchor.body >= world && anchor.body < static_cast<int>(bodies.size()));
   if (anchor.body == world) return Vec3::Zero();
   return bodies[anchor.body].rotation * anchor.local;
-}
-
-Vec6 block(const Vec3& linear, const Vec3& angular) {
-  Vec6 j;
-  j << linear, angular;
-  return j;
-}
-
-// Places the two bodies' blocks in sparse form: a world side is left out, and a lone body's
-// block goes first so that Jmap[1] = −1 marks a one-body row.
-ConstraintRow sparse_row(int body_a, const Vec6& block_a, int body_b, const Vec6& block_b) {
-  assert(body_a != world || body_b != world);
-  ConstraintRow row;
-  if (body_a == world) {
-    row.Jsp = {block_b, Vec6::Zero()};
-    row.Jmap = {body_b, world};
-  } else if (body_b == world) {
-    row.Jsp = {block_a, Vec6::Zero()};
-    row.Jmap = {body_a, world};
-  } else {
-    row.Jsp = {block_a, block_b};
-    row.Jmap = {body_a, body_b};
-  }
-  return row;
 }
 
 }  // namespace
@@ -47,7 +30,7 @@ Anchor anchor_at(const std::vector<RigidBody>& bodies, int body, const Vec3& wor
 Vec3 anchor_position(const std::vector<RigidBody>& bodies, const Anchor& anchor) {
   if (anchor.body == world) return anchor.local;
   // eq. 1-25: p = x + R r0
-  return bodies[anchor.body].x + arm(bodies, anchor);
+  return bodies[anchor.body].x + lever_of(bodies, anchor);
 }
 
 Quat orientation_of(const std::vector<RigidBody>& bodies, int body) {
@@ -55,16 +38,56 @@ Quat orientation_of(const std::vector<RigidBody>& bodies, int body) {
   return body == world ? Quat::Identity() : bodies[body].q;
 }
 
-ConstraintRow point_row(const std::vector<RigidBody>& bodies, const Anchor& a, const Anchor& b,
-                        const Vec3& u) {
-  // J = [ −uᵀ  −(r_a × u)ᵀ   uᵀ  (r_b × u)ᵀ ]
-  return sparse_row(a.body, block(-u, -arm(bodies, a).cross(u)), b.body,
-                    block(u, arm(bodies, b).cross(u)));
+bool holds_block(const std::vector<RigidBody>& bodies, int body) {
+  assert(body >= world && body < static_cast<int>(bodies.size()));
+  // eq. 5-1, 5-8: a fixed body has M⁻¹ = 0 and no velocity; its columns of J are left out
+  return body != world && !bodies[body].is_static();
 }
 
-ConstraintRow angular_row(int body_a, int body_b, const Vec3& e) {
-  // J = [ 0ᵀ  −eᵀ   0ᵀ  eᵀ ]
-  return sparse_row(body_a, block(Vec3::Zero(), -e), body_b, block(Vec3::Zero(), e));
+RowEnds ends_at_point(const std::vector<RigidBody>& bodies, int body_a, int body_b,
+                      const Vec3& point) {
+  RowEnds ends;
+  if (holds_block(bodies, body_a)) add_end(body_a, -1.0, point - bodies[body_a].x, ends);
+  if (holds_block(bodies, body_b)) add_end(body_b, 1.0, point - bodies[body_b].x, ends);
+  assert(ends.count > 0);
+  return ends;
+}
+
+RowEnds ends_at_anchors(const std::vector<RigidBody>& bodies, const Anchor& a, const Anchor& b) {
+  RowEnds ends;
+  if (holds_block(bodies, a.body)) add_end(a.body, -1.0, lever_of(bodies, a), ends);
+  if (holds_block(bodies, b.body)) add_end(b.body, 1.0, lever_of(bodies, b), ends);
+  assert(ends.count > 0);
+  return ends;
+}
+
+void write_point_row(const RowEnds& ends, const Vec3& u, ConstraintRow& row) {
+  for (int k = 0; k < ends.count; ++k) {
+    // J = [ −uᵀ  −(r_a × u)ᵀ   uᵀ  (r_b × u)ᵀ ], one block per moving end
+    row.Jsp[k].head<3>() = ends.sign[k] * u;
+    row.Jsp[k].tail<3>() = ends.sign[k] * ends.lever[k].cross(u);
+    row.Jmap[k] = ends.body[k];
+  }
+}
+
+ConstraintRow point_row(const std::vector<RigidBody>& bodies, const Anchor& a, const Anchor& b,
+                        const Vec3& u) {
+  ConstraintRow row;
+  write_point_row(ends_at_anchors(bodies, a, b), u, row);
+  return row;
+}
+
+ConstraintRow angular_row(const std::vector<RigidBody>& bodies, int body_a, int body_b,
+                          const Vec3& e) {
+  // J = [ 0ᵀ  −eᵀ   0ᵀ  eᵀ ]: a point row without levers, acting on ω alone
+  const RowEnds ends = ends_at_anchors(bodies, Anchor{body_a}, Anchor{body_b});
+  ConstraintRow row;
+  for (int k = 0; k < ends.count; ++k) {
+    row.Jsp[k].head<3>().setZero();
+    row.Jsp[k].tail<3>() = ends.sign[k] * e;
+    row.Jmap[k] = ends.body[k];
+  }
+  return row;
 }
 
 }  // namespace lamina

@@ -1,9 +1,72 @@
 #include "constraints/mlcp.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace lamina {
+namespace {
+
+// M⁻¹ J_b for one body's block in the layout of N components (eq. 3-12, the text's Convert).
+// In the plane, where I⁻¹ turns z into itself, it is [m⁻¹ J_x, m⁻¹ J_y, (I⁻¹)_zz J_ωz]: the
+// numbers of the 6-vector form without its zero terms.
+template <int N>
+Block<N> convert(const RigidBody& body, const Block<N>& block);
+template <>
+Block<6> convert<6>(const RigidBody& body, const Block<6>& block) {
+  return inverse_mass_times(body, block);
+}
+template <>
+Block<3> convert<3>(const RigidBody& body, const Block<3>& block) {
+  // eq. 3-12 in the plane: M⁻¹ = diag(m⁻¹, m⁻¹, (I⁻¹)_zz) on [v_x v_y ω_z]
+  return Block<3>(body.inverse_mass * block[0], body.inverse_mass * block[1],
+                  body.inverse_inertia_world(2, 2) * block[2]);
+}
+
+// Packs row i of the MLCP, in place (packed rows keep their memory from step to step): its J
+// and B blocks, η_i, 1/d_i, ζ_i and bounds. N = 3 asks the row and its bodies to lie in the
+// plane (J's and B's v_z, ω_x, ω_y zero); its numbers are then those of N = 6, cut.
+template <int N>
+void pack_row(const std::vector<RigidBody>& bodies, const ConstraintRow& row,
+              const std::vector<Vec6>& unconstrained, double dt, PackedRow<N>& packed) {
+  assert(row.Jmap[0] >= 0 && row.Jmap[0] != row.Jmap[1]);  // one or two bodies, never the same
+  packed.map = row.Jmap;
+  for (int k = 0; k < 2; ++k) {
+    packed.J[k] = cut<N>(row.Jsp[k]);
+    // the text's Convert: Bᵀ_i = J_i M⁻¹, block by block
+    packed.B[k] = row.Jmap[k] < 0 ? Block<N>::Zero().eval() : convert<N>(bodies[row.Jmap[k]], packed.J[k]);
+  }
+  const bool two = row.Jmap[1] >= 0;
+  // d_i = J_i · B_i
+  const double d = row_dot<N>(packed.J, packed.B[0], packed.B[1], true);
+  // A row moves a body (jacobian_rows.h), so d_i = J_i M⁻¹ J_iᵀ > 0 and 1/d_i is finite.
+  assert(d > 0.0);
+  packed.inverse_d = 1.0 / d;
+  // J_i (V/Δt + M⁻¹ F_ext)
+  const Block<N> u0 = cut<N>(unconstrained[row.Jmap[0]]);
+  const double j_u = row_dot<N>(packed.J, u0, two ? cut<N>(unconstrained[row.Jmap[1]]) : u0, two);
+  // eq. 3-16: η = ζ/Δt − J (V/Δt + M⁻¹ F_ext)
+  packed.eta = row.zeta / dt - j_u;
+  packed.zeta = row.zeta;
+  packed.lambda_min = row.lambda_min;
+  packed.lambda_max = row.lambda_max;
+  packed.friction_of = row.friction_of;
+  packed.mu = row.mu;
+}
+
+// Whether a body's I⁻¹ turns the z axis into itself, so that B = M⁻¹ Jᵀ of a row in the plane
+// (J's v_z, ω_x, ω_y zero) lies in the plane too.
+bool inertia_in_plane(const RigidBody& body) {
+  return body.inverse_inertia_world(0, 2) == 0.0 && body.inverse_inertia_world(1, 2) == 0.0;
+}
+
+template <int N>
+const PackedRow<N>& row_at(const PackedRows<N>& rows, int i) {
+  assert(i >= 0 && i < static_cast<int>(rows.size()));
+  return rows[static_cast<std::size_t>(i)];
+}
+
+}  // namespace
 
 Vec6 inverse_mass_times(const RigidBody& body, const Vec6& block) {
   Vec6 result;
@@ -27,12 +90,6 @@ Vec6 external_force_of(const RigidBody& body) {
   return f;
 }
 
-double row_times(const ConstraintRow& row, const std::vector<Vec6>& per_body) {
-  double sum = ordered_dot<6>(row.Jsp[0], per_body[row.Jmap[0]]);
-  if (!row.is_one_body()) sum += ordered_dot<6>(row.Jsp[1], per_body[row.Jmap[1]]);
-  return sum;
-}
-
 void unconstrained_velocities(const std::vector<RigidBody>& bodies, double dt,
                               std::vector<Vec6>& out) {
   out.resize(bodies.size());
@@ -43,61 +100,105 @@ void unconstrained_velocities(const std::vector<RigidBody>& bodies, double dt,
   }
 }
 
-Mlcp assemble_mlcp(const std::vector<RigidBody>& bodies, std::vector<ConstraintRow> rows,
-                   double dt) {
-  std::vector<Vec6> unconstrained;
-  unconstrained_velocities(bodies, dt, unconstrained);
-  return assemble_mlcp(bodies, std::move(rows), unconstrained, dt);
+double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodies) {
+  const Vec6 v0 = velocity_of(bodies[row.Jmap[0]]);
+  const bool two = !row.is_one_body();
+  // eq. 5-4, 5-5: J_i V
+  return row_dot<6>(row.Jsp, v0, two ? velocity_of(bodies[row.Jmap[1]]) : v0, two);
 }
 
-Mlcp assemble_mlcp(const std::vector<RigidBody>& bodies, std::vector<ConstraintRow> rows,
-                   const std::vector<Vec6>& unconstrained, double dt) {
-  Mlcp mlcp;
-  mlcp.body_count = static_cast<int>(bodies.size());
-  const auto s = static_cast<Eigen::Index>(rows.size());
-  mlcp.eta.resize(s);
-  mlcp.d.resize(s);
-  mlcp.Bsp.resize(rows.size());
-  for (Eigen::Index i = 0; i < s; ++i) {
-    const RowTerms<6> terms = assemble_row<6>(bodies, rows[i], unconstrained, dt);
-    mlcp.Bsp[i] = terms.B;
-    mlcp.eta[i] = terms.eta;
-    mlcp.d[i] = terms.d;
+void Mlcp::assemble(const std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
+                    const std::vector<Vec6>& unconstrained, double dt) {
+  inertia_in_plane_.resize(bodies.size());
+  for (size_t b = 0; b < bodies.size(); ++b) inertia_in_plane_[b] = inertia_in_plane(bodies[b]);
+  planar_ = std::all_of(rows.begin(), rows.end(), [&](const ConstraintRow& row) {
+    return in_plane(row.Jsp[0]) && in_plane(row.Jsp[1]) && inertia_in_plane_[row.Jmap[0]] &&
+           (row.is_one_body() || inertia_in_plane_[row.Jmap[1]]);
+  });
+  body_count_ = static_cast<int>(bodies.size());
+  visit_mutable([&](auto& packed) {
+    packed.resize(rows.size());
+    for (size_t i = 0; i < rows.size(); ++i) pack_row(bodies, rows[i], unconstrained, dt, packed[i]);
+  });
+}
+
+void Mlcp::assemble_rows_of(const Mlcp& from, const std::vector<int>& rows,
+                            const std::vector<double>& zeta, double dt) {
+  planar_ = from.planar_;
+  body_count_ = from.body_count_;
+  auto select = [&](const auto& source, auto& packed) {
+    packed.resize(rows.size());
+    for (size_t i = 0; i < rows.size(); ++i) {
+      packed[i] = source[static_cast<std::size_t>(rows[i])];
+      packed[i].zeta = zeta[i];
+      // eq. 3-16 for bodies at rest under no force: η = ζ/Δt
+      packed[i].eta = zeta[i] / dt;
+    }
+  };
+  if (planar_) {
+    select(from.planar_rows_, planar_rows_);
+  } else {
+    select(from.general_rows_, general_rows_);
   }
-  mlcp.rows = std::move(rows);
-  return mlcp;
 }
 
-std::vector<Vec6> transpose_multiply(const Mlcp& mlcp,
-                                     const Eigen::Ref<const Eigen::VectorXd>& lambda) {
-  std::vector<Vec6> a(mlcp.body_count, Vec6::Zero());
-  for (size_t i = 0; i < mlcp.rows.size(); ++i) {
-    const ConstraintRow& row = mlcp.rows[i];
-    a[row.Jmap[0]] += lambda[i] * mlcp.Bsp[i][0];
-    if (!row.is_one_body()) a[row.Jmap[1]] += lambda[i] * mlcp.Bsp[i][1];
-  }
-  return a;
+int Mlcp::row_count() const {
+  return visit([](const auto& rows) { return static_cast<int>(rows.size()); });
 }
 
-Eigen::VectorXd complementarity_slack(const Mlcp& mlcp,
-                                      const Eigen::Ref<const Eigen::VectorXd>& lambda) {
-  const std::vector<Vec6> a = transpose_multiply(mlcp, lambda);
-  Eigen::VectorXd w(lambda.size());
-  // eq. 3-23: W = J B λ − η
-  for (size_t i = 0; i < mlcp.rows.size(); ++i) w[i] = row_times(mlcp.rows[i], a) - mlcp.eta[i];
-  return w;
+std::array<int, 2> Mlcp::bodies_of(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).map; });
 }
 
-std::array<double, 2> row_bounds(const ConstraintRow& row,
-                                 const Eigen::Ref<const Eigen::VectorXd>& lambda) {
-  return bounds_of(row, lambda.data());
+Vec6 Mlcp::jacobian(int i, int k) const {
+  return visit([&](const auto& rows) { return widen(row_at(rows, i).J[k]); });
 }
 
-double mlcp_residual(const Mlcp& mlcp, const Eigen::Ref<const Eigen::VectorXd>& lambda) {
-  const Eigen::VectorXd w = complementarity_slack(mlcp, lambda);
+Vec6 Mlcp::b_block(int i, int k) const {
+  return visit([&](const auto& rows) { return widen(row_at(rows, i).B[k]); });
+}
+
+double Mlcp::zeta(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).zeta; });
+}
+
+double Mlcp::eta(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).eta; });
+}
+
+double Mlcp::d(int i) const {
+  // d_i = J_i · B_i, as assembled
+  return visit([&](const auto& rows) {
+    const auto& row = row_at(rows, i);
+    return row_dot(row.J, row.B[0], row.B[1], true);
+  });
+}
+
+int Mlcp::friction_of(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).friction_of; });
+}
+
+std::array<double, 2> Mlcp::bounds(int i, const double* lambda) const {
+  return visit([&](const auto& rows) { return bounds_of(row_at(rows, i), lambda); });
+}
+
+Eigen::VectorXd Mlcp::slack(const double* lambda) const {
+  return visit([&](const auto& rows) {
+    constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
+    std::vector<Block<N>> a;
+    transpose_multiply(rows, body_count_, lambda, a);
+    Eigen::VectorXd w(static_cast<Eigen::Index>(rows.size()));
+    // eq. 3-23: W = J B λ − η
+    for (size_t i = 0; i < rows.size(); ++i) w[static_cast<Eigen::Index>(i)] = row_dot(rows[i], a) - rows[i].eta;
+    return w;
+  });
+}
+
+double Mlcp::residual(const double* lambda) const {
+  const Eigen::VectorXd w = slack(lambda);
   double sum = 0.0;
   for (Eigen::Index i = 0; i < w.size(); ++i) {
-    const auto [lo, hi] = row_bounds(mlcp.rows[i], lambda);
+    const auto [lo, hi] = bounds(static_cast<int>(i), lambda);
     // eq. 3-24: W = 0 inside the bounds, W ≥ 0 at λ⁻, W ≤ 0 at λ⁺
     double violation = w[i];
     if (lambda[i] <= lo) violation = std::min(w[i], 0.0);
@@ -108,17 +209,58 @@ double mlcp_residual(const Mlcp& mlcp, const Eigen::Ref<const Eigen::VectorXd>& 
   return std::sqrt(sum);
 }
 
-void apply_constraint_forces(std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
-                             const Eigen::Ref<const Eigen::VectorXd>& lambda) {
-  for (size_t i = 0; i < rows.size(); ++i) {
-    for (int k = 0; k < 2; ++k) {
-      if (rows[i].Jmap[k] < 0) continue;
-      RigidBody& body = bodies[rows[i].Jmap[k]];
-      // eq. 3-11: F_c = Jᵀ λ
-      body.force += lambda[i] * rows[i].Jsp[k].head<3>();
-      body.torque += lambda[i] * rows[i].Jsp[k].tail<3>();
-    }
-  }
+double Mlcp::row_times(int i, const std::vector<Vec6>& per_body) const {
+  return visit([&](const auto& rows) {
+    constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
+    const auto& row = row_at(rows, i);
+    const Block<N> x0 = cut<N>(per_body[row.map[0]]);
+    return row_dot<N>(row.J, x0, row.two_bodies() ? cut<N>(per_body[row.map[1]]) : x0,
+                      row.two_bodies());
+  });
+}
+
+namespace {
+
+// Adds λ J_b to body b's force and torque: all six components, or v_x, v_y, ω_z in the plane.
+void add_wrench(RigidBody& body, double lambda, const Block<6>& J) {
+  body.force += lambda * J.head<3>();
+  body.torque += lambda * J.tail<3>();
+}
+void add_wrench(RigidBody& body, double lambda, const Block<3>& J) {
+  body.force.x() += lambda * J[0];
+  body.force.y() += lambda * J[1];
+  body.torque.z() += lambda * J[2];
+}
+
+}  // namespace
+
+void Mlcp::add_constraint_forces(std::vector<RigidBody>& bodies, const double* lambda) const {
+  visit([&](const auto& rows) {
+    // eq. 3-11: F_c = Jᵀ λ
+    for_each_force(rows, lambda, [&](int body, double l, const auto& J) {
+      add_wrench(bodies[body], l, J);
+    });
+  });
+}
+
+Vec6 Mlcp::constraint_wrench(int body, const double* lambda) const {
+  Vec6 wrench = Vec6::Zero();
+  visit([&](const auto& rows) {
+    // eq. 3-11, 5-9: body b's block of F_c = Jᵀ λ
+    for_each_force(rows, lambda, [&](int b, double l, const auto& J) {
+      if (b == body) wrench += l * widen(J);
+    });
+  });
+  return wrench;
+}
+
+Mlcp assemble_mlcp(const std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
+                   double dt) {
+  std::vector<Vec6> unconstrained;
+  unconstrained_velocities(bodies, dt, unconstrained);
+  Mlcp mlcp;
+  mlcp.assemble(bodies, rows, unconstrained, dt);
+  return mlcp;
 }
 
 }  // namespace lamina

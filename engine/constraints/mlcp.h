@@ -1,7 +1,14 @@
-// The mixed linear complementarity problem of one step (eq. 3-16, 3-23, 3-24):
+// The mixed linear complementarity problem of one step (eq. 3-16, 3-23, 3-24), assembled once:
 //   J B λ = η  with  B = M⁻¹ Jᵀ,  η = ζ/Δt − J (V/Δt + M⁻¹ F_ext),  λ⁻ ≤ λ ≤ λ⁺.
-// Functions reading λ take an Eigen::Ref, so that λ kept in a std::vector (a World keeps its
-// memory from step to step) is read through an Eigen::Map without a copy.
+//
+// Mlcp holds the rows packed for the sweep (packed_rows.h), in the planar layout when every row
+// and body lies in the plane and in the general one otherwise; both give the same numbers bit
+// for bit (block_layout.h). It is the only assembled form. The text's form of the problem —
+// Jsp, Bsp, Jmap, ζ, η, d, the bounds, W, the dense J and J M⁻¹ Jᵀ (dense_system.h) — is read
+// from it through the views below; reports and explanations show those views.
+//
+// λ is kept by the caller (a World keeps its memory from step to step) and passed as a pointer
+// to row_count() values.
 #pragma once
 
 #include <array>
@@ -10,68 +17,88 @@
 #include <Eigen/Core>
 
 #include "constraints/constraint_row.h"
-#include "constraints/row_terms.h"
+#include "constraints/packed_rows.h"
 #include "motion/rigid_body.h"
 
 namespace lamina {
 
-struct Mlcp {
-  std::vector<ConstraintRow> rows;       // J in sparse form with ζ and the bounds
-  std::vector<std::array<Vec6, 2>> Bsp;  // Bᵀ in the same sparse form: M⁻¹ of each block (Convert)
-  Eigen::VectorXd eta;                   // η, in m/s² or rad/s² (eq. 3-16)
-  Eigen::VectorXd d;                     // d_i = J_i · B_i, the diagonal of J B
-  int body_count = 0;                    // n, the number of bodies V spans
-};
-
 // Body b's 6-vector [v; ω] (eq. 3-5) and [F; τ] of the forces accumulated on it (eq. 3-9).
 Vec6 velocity_of(const RigidBody& body);
 Vec6 external_force_of(const RigidBody& body);
+
+// M⁻¹ X for one body's 6-vector X: [m⁻¹ X_v; I⁻¹ X_ω] (eq. 3-12, the text's Convert).
+Vec6 inverse_mass_times(const RigidBody& body, const Vec6& block);
 
 // V/Δt + M⁻¹ F_ext of every body (eq. 3-16): the velocity each body would reach without
 // constraints, per Δt, in m/s² or rad/s². `out` is resized to the bodies (its memory is reused).
 void unconstrained_velocities(const std::vector<RigidBody>& bodies, double dt,
                               std::vector<Vec6>& out);
 
-// Builds the MLCP of eq. 3-16 from the rows, the bodies' velocities and accumulated forces.
-Mlcp assemble_mlcp(const std::vector<RigidBody>& bodies, std::vector<ConstraintRow> rows,
+// J_i V for a written row and the bodies' velocities now (eq. 5-4, 5-5: a contact point's
+// velocity along n), summed as every J X of the MLCP is (row_dot).
+double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodies);
+
+class Mlcp {
+ public:
+  // Assembles the MLCP of eq. 3-16 for the rows, `unconstrained` being each body's
+  // V/Δt + M⁻¹ F_ext (unconstrained_velocities; zeros: η = ζ/Δt). Its memory is reused.
+  void assemble(const std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
+                const std::vector<Vec6>& unconstrained, double dt);
+  // Some rows of another MLCP on the same bodies, each asking a new ζ of bodies that start from
+  // rest under no force: rows[i] of `from` becomes row i with ζ_i = zeta[i], η_i = ζ_i / Δt
+  // (split impulse's position rows are the velocity MLCP's contact rows: J, B, d and the bounds
+  // are the same).
+  void assemble_rows_of(const Mlcp& from, const std::vector<int>& rows,
+                        const std::vector<double>& zeta, double dt);
+
+  int row_count() const;
+  int body_count() const { return body_count_; }  // n, the bodies V spans
+
+  // The text's form of row i:
+  std::array<int, 2> bodies_of(int i) const;  // Jmap: body indices, [1] = −1 for a one-body row
+  Vec6 jacobian(int i, int k) const;          // Jsp[i][k], [v ω]; zero for a missing body
+  Vec6 b_block(int i, int k) const;           // Bsp[i][k] = M⁻¹ J_iᵀ's block (Convert)
+  double zeta(int i) const;                   // ζ_i, in m/s or rad/s (eq. 3-15)
+  double eta(int i) const;                    // η_i, in m/s² or rad/s² (eq. 3-16)
+  double d(int i) const;                      // d_i = J_i · B_i, the diagonal of J B
+  int friction_of(int i) const;               // the contact row bounding a friction row, or −1
+  // λ⁻_i and λ⁺_i for the current λ: fixed, or ±μ λc for a friction row (eq. 3-26).
+  std::array<double, 2> bounds(int i, const double* lambda) const;
+
+  // W = J B λ − η (eq. 3-23).
+  Eigen::VectorXd slack(const double* lambda) const;
+  // How far λ is from solving the MLCP: per row |W_i| when λ is inside its bounds, and only the
+  // wrong-signed part of W_i at a bound (eq. 3-24); the Euclidean norm over rows.
+  double residual(const double* lambda) const;
+  // J_i X for per-body 6-vectors X (e.g. V: J_i V, eq. 3-8).
+  double row_times(int i, const std::vector<Vec6>& per_body) const;
+
+  // F_c = Jᵀ λ (eq. 3-11) added to each body's accumulated force and torque.
+  void add_constraint_forces(std::vector<RigidBody>& bodies, const double* lambda) const;
+  // Body b's share of F_c = Jᵀ λ, [f_c; τ_c] about its centre, in N and N·m (eq. 3-11, 5-9).
+  Vec6 constraint_wrench(int body, const double* lambda) const;
+
+  // f(rows) on the packed rows of the layout in use (PackedRows<3> or PackedRows<6>).
+  template <class F>
+  decltype(auto) visit(F&& f) const {
+    return planar_ ? f(planar_rows_) : f(general_rows_);
+  }
+
+ private:
+  template <class F>
+  decltype(auto) visit_mutable(F&& f) {
+    return planar_ ? f(planar_rows_) : f(general_rows_);
+  }
+
+  bool planar_ = true;           // the layout in use: planar_rows_ or general_rows_
+  int body_count_ = 0;           // n
+  PackedRows<3> planar_rows_;    // [v_x v_y ω_z] blocks
+  PackedRows<6> general_rows_;   // [v ω] blocks
+  std::vector<unsigned char> inertia_in_plane_;  // per body: I⁻¹ turns z into z (scratch)
+};
+
+// The MLCP of the rows for the bodies' velocities and accumulated forces now (eq. 3-16).
+Mlcp assemble_mlcp(const std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
                    double dt);
-// The same for given V/Δt + M⁻¹ F_ext (see unconstrained_velocities; zeros: η = ζ/Δt).
-Mlcp assemble_mlcp(const std::vector<RigidBody>& bodies, std::vector<ConstraintRow> rows,
-                   const std::vector<Vec6>& unconstrained, double dt);
-
-// J_i · X for per-body 6-vectors X (the text's Multiply, one row; guards Jmap[1] = −1), each
-// block's dot product summed in order (ordered_dot).
-double row_times(const ConstraintRow& row, const std::vector<Vec6>& per_body);
-
-// a = B λ, one 6-vector per body: the text's TransposeMultiply, scaled by λ[i] as it must be
-// (the text's pseudo-code writes λ[b1] and λ[b2]).
-std::vector<Vec6> transpose_multiply(const Mlcp& mlcp,
-                                     const Eigen::Ref<const Eigen::VectorXd>& lambda);
-
-// W = J B λ − η (eq. 3-23) for a given λ.
-Eigen::VectorXd complementarity_slack(const Mlcp& mlcp,
-                                      const Eigen::Ref<const Eigen::VectorXd>& lambda);
-
-// The bounds of a row for the current λ (λ[0..s)): fixed, or ±μ λc for a friction row (eq. 3-26).
-// `Row` is a ConstraintRow or any row with its lambda_min, lambda_max, friction_of and mu.
-template <class Row>
-std::array<double, 2> bounds_of(const Row& row, const double* lambda) {
-  if (row.friction_of < 0) return {row.lambda_min, row.lambda_max};
-  // eq. 3-26: a friction row is bounded by ±μ λc of its contact row
-  const double limit = row.mu * lambda[row.friction_of];
-  return {-limit, limit};
-}
-
-// The bounds of row i for the current λ: fixed, or ±μ λc for a friction row (eq. 3-26).
-std::array<double, 2> row_bounds(const ConstraintRow& row,
-                                 const Eigen::Ref<const Eigen::VectorXd>& lambda);
-
-// How far λ is from solving the MLCP: per row |W_i| when λ is inside its bounds, and only the
-// wrong-signed part of W_i at a bound (eq. 3-24); the Euclidean norm over rows.
-double mlcp_residual(const Mlcp& mlcp, const Eigen::Ref<const Eigen::VectorXd>& lambda);
-
-// F_c = Jᵀ λ (eq. 3-11), added to each body's accumulated force and torque.
-void apply_constraint_forces(std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
-                             const Eigen::Ref<const Eigen::VectorXd>& lambda);
 
 }  // namespace lamina

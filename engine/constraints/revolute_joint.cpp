@@ -1,11 +1,13 @@
 #include "constraints/revolute_joint.h"
 
+#include "kinematics/require.h"
+
 namespace lamina {
 
 RevoluteJoint::RevoluteJoint(const Anchor& a, const Anchor& b) : a_(a), b_(b) {
   const std::string what = "revolute joint";
   require_body_pair(a.body, b.body, what);
-  require_input(a.local.allFinite() && b.local.allFinite(), what, "an anchor is not finite");
+  require(a.local.allFinite() && b.local.allFinite(), what + ": an anchor is not finite");
 }
 
 void RevoluteJoint::write_rows(const std::vector<RigidBody>& bodies, double dt, double beta,

@@ -24,6 +24,9 @@ class RevoluteJoint final : public Constraint {
   // Two equality rows, x then y.
   void write_rows(const std::vector<RigidBody>& bodies, double dt, double beta,
                   std::vector<ConstraintRow>& rows) const override;
+  const char* kind() const override { return "revolute joint"; }
+  std::array<int, 2> bodies() const override { return {a_.body, b_.body}; }
+  std::optional<std::array<Anchor, 2>> ends() const override { return std::array{a_, b_}; }
 
  private:
   Anchor a_;  // the pin on the first body (or the world)

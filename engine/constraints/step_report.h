@@ -1,31 +1,24 @@
-// What one constrained step solved, for a tutorial's step-through output and for tests.
-//
-//   rows   J in sparse form (Jsp, Jmap), ζ and the bounds λ⁻, λ⁺   (eq. 3-15, 3-24)
-//   η, d   the MLCP's right-hand side and the diagonal of J B     (eq. 3-16)
-//   λ_exp  the guess PGS started from (last step's λ, or 0)
-//   λ      the answer, and ‖W‖ after every PGS sweep               (eq. 3-23, 3-24)
-//   W      J B λ − η for the answer                                 (eq. 3-23)
+// What one constrained step solved, for explanations, frames and tests: the step's assembled
+// MLCP (a copy of the one the step solved), where PGS started and where it ended. Everything
+// else — J, ζ, η, d, the bounds, W = J B λ − η, F_c = Jᵀ λ — is read from the MLCP's views.
 #pragma once
-
-#include <string>
-#include <vector>
 
 #include <Eigen/Core>
 
 #include "constraints/mlcp.h"
-#include "constraints/pgs_solver.h"
+#include "constraints/sweep_settings.h"
 
 namespace lamina {
 
 struct StepReport {
-  Mlcp mlcp;                   // the rows with Bsp, η and d, as assembled at t
+  Mlcp mlcp;                   // the MLCP as assembled at t (eq. 3-16)
   Eigen::VectorXd lambda_exp;  // λ_exp, the warm start, in N or N·m
-  PgsResult solution;          // λ, sweeps run, the residual after each sweep
-  Eigen::VectorXd W;           // W = J B λ − η for the answer, in m/s² or rad/s² (eq. 3-23)
-};
+  SweepResult solution;        // λ, sweeps run, the residual ‖W‖ after each sweep (eq. 3-23, 3-24)
 
-// The report as text: the dense J, Bᵀ and J B, then per row ζ, η, bounds, λ_exp, λ and W, then the
-// residual after each sweep. Small systems only (J is printed in full, s × 6n).
-std::string format_step_report(const StepReport& report);
+  // W = J B λ − η for the answer, in m/s² or rad/s² (eq. 3-23).
+  Eigen::VectorXd slack() const { return mlcp.slack(solution.lambda.data()); }
+  // Body b's share of F_c = Jᵀ λ, [f_c; τ_c] about its centre, in N and N·m (eq. 3-11, 5-9).
+  Vec6 constraint_wrench(int body) const { return mlcp.constraint_wrench(body, solution.lambda.data()); }
+};
 
 }  // namespace lamina

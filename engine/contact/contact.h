@@ -11,6 +11,7 @@
 
 #include <array>
 
+#include "constraints/constraint_row.h"
 #include "contact/broad_phase.h"
 #include "contact/narrow_phase.h"
 
@@ -29,6 +30,10 @@ struct Contact {
   double separation = 0.0;            // C of eq. 4-1, in m; −depth when penetrating
   double drift = 0.0;                 // |(p2 − p1) − C n|, how far the anchors slid apart, in m
   bool fresh = false;                 // found by this step's narrow phase; else re-placed from cache
+
+  // Where its rows sit in this step's MLCP, recorded when they are written (the row map):
+  int row = -1;                              // its contact row (eq. 4-3)
+  std::array<int, 2> friction_rows{-1, -1};  // its friction rows along u1 = z × n and u2 = z; −1: none
 };
 
 // The contacts of one pair of bodies: at most two in the plane (see ContactCache).
@@ -39,6 +44,7 @@ struct ContactPair {
   int capacity = 2;                   // most contacts kept: 2 for box–box, 1 with a circle
   int count = 0;                      // contacts in use
   std::array<Contact, 2> contacts{};  // the first `count` are in use
+  RowRange rows;                      // its rows in this step's MLCP: contact rows, then friction rows
 };
 
 // A contact from the narrow phase's deepest point: the incident body's point is `point`, the

@@ -1,5 +1,10 @@
 #include "contact/contact_cache.h"
 
+#include <cmath>
+#include <string>
+
+#include "kinematics/require.h"
+
 namespace lamina {
 namespace {
 
@@ -65,7 +70,20 @@ void merge(ContactPair& pair, Contact fresh, const CacheSettings& settings) {
   }
 }
 
+void require_margin(double value, const char* name) {
+  require(std::isfinite(value) && value >= 0.0,
+          std::string("cache settings: ") + name + " must be finite and ≥ 0, got " +
+              std::to_string(value));
+}
+
 }  // namespace
+
+void validate(const CacheSettings& s) {
+  require_margin(s.keep_margin, "keep_margin");
+  require_margin(s.merge_distance, "merge_distance");
+  require_margin(s.drift_limit, "drift_limit");
+  require_margin(s.tie_tolerance, "tie_tolerance");
+}
 
 CachedPoints ContactCache::cached_points(const BodyPair& bodies, const std::vector<Pose2>& poses,
                                          size_t& cursor) const {
@@ -107,5 +125,13 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::v
   }
   pairs_.swap(next_);
 }
+
+void ContactCache::write_rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,
+                              const StepSettings& step, std::vector<ConstraintRow>& rows,
+                              std::vector<double>& lambda) {
+  add_contact_rows(pairs_, bodies, settings, step, rows, lambda);
+}
+
+void ContactCache::store_lambdas(const double* lambda) { store_contact_lambdas(pairs_, lambda); }
 
 }  // namespace lamina

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "contact/contact.h"
+#include "contact/contact_rows.h"
 
 namespace lamina {
 
@@ -30,6 +31,9 @@ struct CacheSettings {
   double tie_tolerance = 5e-4;  // vertices this close to the deepest count as equally deep, in m
 };
 
+// Throws std::invalid_argument naming the first margin that is negative or not finite.
+void validate(const CacheSettings& settings);
+
 // The narrow phase's result for one pair.
 struct FreshCollision {
   BodyPair bodies;      // the pair, body 1 < body 2
@@ -40,7 +44,6 @@ class ContactCache {
  public:
   // The pairs with contacts, sorted by (body 1, body 2).
   const std::vector<ContactPair>& pairs() const { return pairs_; }
-  std::vector<ContactPair>& pairs() { return pairs_; }
 
   // The cached points of a pair re-placed at the current poses, for the narrow phase's ties.
   // Pairs are asked for in sorted order: `cursor` (0 before the first) walks the cache once.
@@ -51,6 +54,14 @@ class ContactCache {
   void update(const std::vector<FreshCollision>& fresh, const std::vector<Pose2>& poses,
               const std::vector<Shape>& shapes, const std::vector<Material>& materials,
               const CacheSettings& settings);
+
+  // Appends the rows of its pairs and their warm-start λ, recording where each pair's and each
+  // contact's rows went (contact_rows.h, add_contact_rows).
+  void write_rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,
+                  const StepSettings& step, std::vector<ConstraintRow>& rows,
+                  std::vector<double>& lambda);
+  // Keeps each contact's solved λ, read from its rows, as its warm start for the next step.
+  void store_lambdas(const double* lambda);
 
  private:
   std::vector<ContactPair> pairs_;  // this step's pairs, sorted

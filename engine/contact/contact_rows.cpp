@@ -1,73 +1,47 @@
 #include "contact/contact_rows.h"
 
 #include <algorithm>
-#include <array>
-#include <utility>
+#include <cmath>
+#include <string>
 
+#include "constraints/jacobian_rows.h"
 #include "constraints/mlcp.h"
+#include "kinematics/require.h"
 
 namespace lamina {
 namespace {
-
-// The levers of a contact point c: r = c − x for each body of the pair that moves, in Jmap's
-// order. A static body never moves (eq. 5-1), so it enters as the world and the rows keep only
-// the other body's block, as eq. 5-8 writes it.
-struct Levers {
-  int count = 0;                    // the moving bodies, 1 or 2
-  std::array<int, 2> body{-1, -1};  // their indices
-  std::array<double, 2> sign{};     // −1 for body 1, +1 for body 2 (the signs of eq. 4-3)
-  std::array<Vec3, 2> r;            // r = c − x, in m
-};
-
-Levers levers_at(const std::vector<RigidBody>& bodies, const BodyPair& pair, const Vec2& c) {
-  Levers levers;
-  for (const auto& [body, sign] : {std::pair{pair.first, -1.0}, std::pair{pair.second, 1.0}}) {
-    if (bodies[body].is_static()) continue;
-    levers.body[levers.count] = body;
-    levers.sign[levers.count] = sign;
-    levers.r[levers.count++] = lift(c) - bodies[body].x;
-  }
-  return levers;
-}
 
 // A row as ConstraintRow's defaults make it: new rows are copied from it, which costs less than
 // value-initialising each one in place.
 const ConstraintRow blank_row;
 
-// Appends the row of direction u at the levers' contact point.
-ConstraintRow& append_row(std::vector<ConstraintRow>& rows, const Levers& levers, const Vec3& u) {
-  ConstraintRow& row = rows.emplace_back(blank_row);
-  for (int k = 0; k < levers.count; ++k) {
-    // eq. 4-3: J = [−uᵀ  −(r1×u)ᵀ  uᵀ  (r2×u)ᵀ], r1 = c − x1, r2 = c − x2
-    row.Jsp[k].head<3>() = levers.sign[k] * u;
-    row.Jsp[k].tail<3>() = levers.sign[k] * levers.r[k].cross(u);
-    row.Jmap[k] = levers.body[k];
-  }
-  return row;
+// Appends the point row of direction u at the ends' contact point; returns its index.
+int append_row(std::vector<ConstraintRow>& rows, const RowEnds& ends, const Vec3& u) {
+  write_point_row(ends, u, rows.emplace_back(blank_row));
+  return static_cast<int>(rows.size()) - 1;
 }
 
 // The velocity a cached point with a gap may approach at.
 double gap_velocity(double separation, double dt) {
-  // notes fix 6: a gap C > 0 may close within the step, no faster: J V ≥ −C/Δt (0 when touching)
+  // a gap C > 0 may close within the step, no faster: J V ≥ −C/Δt (0 when touching)
   return separation > 0.0 ? -separation / dt : 0.0;
 }
 
 // The velocity that pushes a penetration out, a slop deep being left alone.
-double push_out_velocity(double separation, const ContactSettings& settings, double dt) {
+double push_out_velocity(double separation, const ContactSettings& settings,
+                         const StepSettings& step) {
   // eq. 4-4, 4-5: J V ≥ ζ/Δt, ζ = −β min(C, 0); here with C + slop
-  return -settings.beta * std::min(separation + settings.slop, 0.0) / dt;
+  return -step.beta * std::min(separation + settings.slop, 0.0) / step.dt;
 }
 
-void append_contact_row(std::vector<ConstraintRow>& rows, const ContactPair& pair,
-                        const Contact& contact, const Levers& levers,
-                        const std::vector<RigidBody>& bodies, const ContactSettings& settings,
-                        double dt) {
-  ConstraintRow& row = append_row(rows, levers, lift(contact.normal));
+void write_contact_row(ConstraintRow& row, const ContactPair& pair, const Contact& contact,
+                       const std::vector<RigidBody>& bodies, const ContactSettings& settings,
+                       const StepSettings& step) {
   // eq. 4-3, 5-10: 0 ≤ λ < ∞
   row.lambda_min = 0.0;
-  row.zeta = gap_velocity(contact.separation, dt);
+  row.zeta = gap_velocity(contact.separation, step.dt);
   if (settings.correction == PositionCorrection::baumgarte) {
-    row.zeta += push_out_velocity(contact.separation, settings, dt);
+    row.zeta += push_out_velocity(contact.separation, settings, step);
   }
   // Restitution (beyond the text): a touching point approaching faster than v_e leaves at e times
   // its approach speed J V(t). With e = 0 that asks for ζ ≥ 0, which ζ already is when touching.
@@ -78,91 +52,77 @@ void append_contact_row(std::vector<ConstraintRow>& rows, const ContactPair& pai
   }
 }
 
-void append_friction_row(std::vector<ConstraintRow>& rows, const ContactPair& pair,
-                         const Levers& levers, const Vec3& u, int contact_row_index) {
-  ConstraintRow& row = append_row(rows, levers, u);
-  // eq. 3-26 with λ± = ±μ λc, λc read from the contact row during the iterations
-  row.friction_of = contact_row_index;
-  row.mu = pair.friction;
-}
-
-}  // namespace
-
+// Friction rows per contact of a pair: none when μ = 0 (their bounds would be ±0), u1, and u2
+// when asked for.
 int friction_rows_per_contact(const ContactPair& pair, const ContactSettings& settings) {
   if (pair.friction == 0.0) return 0;
   return settings.out_of_plane_friction ? 2 : 1;
 }
 
-double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodies) {
-  double jv = row.Jsp[0].dot(velocity_of(bodies[row.Jmap[0]]));
-  if (!row.is_one_body()) jv += row.Jsp[1].dot(velocity_of(bodies[row.Jmap[1]]));
-  return jv;
+}  // namespace
+
+void validate(const ContactSettings& s) {
+  require(std::isfinite(s.slop) && s.slop >= 0.0,
+          "contact settings: slop must be finite and ≥ 0, got " + std::to_string(s.slop));
+  require(std::isfinite(s.restitution_threshold) && s.restitution_threshold >= 0.0,
+          "contact settings: restitution_threshold must be finite and ≥ 0, got " +
+              std::to_string(s.restitution_threshold));
 }
 
-void add_contact_rows(const std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
-                      const ContactSettings& settings, double dt, std::vector<ConstraintRow>& rows,
-                      std::vector<double>& warm_start, std::vector<RowKind>& kinds) {
-  for (const ContactPair& pair : pairs) {
-    const int first = static_cast<int>(rows.size());
-    std::array<Levers, 2> levers;
+void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
+                      const ContactSettings& settings, const StepSettings& step,
+                      std::vector<ConstraintRow>& rows, std::vector<double>& lambda) {
+  for (ContactPair& pair : pairs) {
+    pair.rows.first = static_cast<int>(rows.size());
+    std::array<RowEnds, 2> ends;
     for (int k = 0; k < pair.count; ++k) {
-      levers[k] = levers_at(bodies, pair.bodies, pair.contacts[k].point);
-      append_contact_row(rows, pair, pair.contacts[k], levers[k], bodies, settings, dt);
-      warm_start.push_back(pair.contacts[k].lambda_normal);
-      kinds.push_back(RowKind::contact);
+      Contact& contact = pair.contacts[k];
+      // r1 = c − x1, r2 = c − x2
+      ends[k] = ends_at_point(bodies, pair.bodies.first, pair.bodies.second, lift(contact.point));
+      contact.row = append_row(rows, ends[k], lift(contact.normal));
+      write_contact_row(rows.back(), pair, contact, bodies, settings, step);
+      lambda.push_back(contact.lambda_normal);
     }
     const int tangents = friction_rows_per_contact(pair, settings);
-    for (int t = 0; t < tangents; ++t) {
+    for (int t = 0; t < 2; ++t) {
       for (int k = 0; k < pair.count; ++k) {
-        const Contact& contact = pair.contacts[k];
+        Contact& contact = pair.contacts[k];
+        contact.friction_rows[t] = -1;
+        if (t >= tangents) continue;
         const bool in_plane = t == 0;
         const Vec3 u = in_plane ? lift(tangent_of(contact.normal)) : Vec3::UnitZ();
-        append_friction_row(rows, pair, levers[k], u, first + k);
-        warm_start.push_back(in_plane ? contact.lambda_tangent : 0.0);
-        kinds.push_back(in_plane ? RowKind::friction : RowKind::out_of_plane_friction);
+        contact.friction_rows[t] = append_row(rows, ends[k], u);
+        // eq. 3-26 with λ± = ±μ λc, λc read from the contact row during the iterations
+        rows.back().friction_of = contact.row;
+        rows.back().mu = pair.friction;
+        lambda.push_back(in_plane ? contact.lambda_tangent : 0.0);
       }
     }
+    pair.rows.count = static_cast<int>(rows.size()) - pair.rows.first;
   }
 }
 
-void store_contact_lambdas(std::vector<ContactPair>& pairs, const std::vector<double>& lambda,
-                           const ContactSettings& settings) {
-  int first = 0;
+void store_contact_lambdas(std::vector<ContactPair>& pairs, const double* lambda) {
   for (ContactPair& pair : pairs) {
-    const int tangents = friction_rows_per_contact(pair, settings);
     for (int k = 0; k < pair.count; ++k) {
-      pair.contacts[k].lambda_normal = lambda[first + k];
-      pair.contacts[k].lambda_tangent = tangents > 0 ? lambda[first + pair.count + k] : 0.0;
+      Contact& contact = pair.contacts[k];
+      contact.lambda_normal = lambda[contact.row];
+      contact.lambda_tangent = contact.friction_rows[0] >= 0 ? lambda[contact.friction_rows[0]] : 0.0;
     }
-    first += pair.count * (1 + tangents);
   }
 }
 
 void position_targets(const std::vector<ContactPair>& pairs, const ContactSettings& settings,
-                      double dt, std::vector<int>& rows, std::vector<double>& zeta) {
+                      const StepSettings& step, std::vector<int>& rows, std::vector<double>& zeta) {
   rows.clear();
   zeta.clear();
-  int first = 0;
   for (const ContactPair& pair : pairs) {
     for (int k = 0; k < pair.count; ++k) {
-      const double separation = pair.contacts[k].separation;
-      rows.push_back(first + k);
-      zeta.push_back(gap_velocity(separation, dt) + push_out_velocity(separation, settings, dt));
+      const Contact& contact = pair.contacts[k];
+      rows.push_back(contact.row);
+      zeta.push_back(gap_velocity(contact.separation, step.dt) +
+                     push_out_velocity(contact.separation, settings, step));
     }
-    first += pair.count * (1 + friction_rows_per_contact(pair, settings));
-  }
-}
-
-void add_position_rows(const std::vector<ContactPair>& pairs,
-                       const std::vector<ConstraintRow>& velocity_rows,
-                       const ContactSettings& settings, double dt,
-                       std::vector<ConstraintRow>& rows) {
-  std::vector<int> contact_rows;
-  std::vector<double> zeta;
-  position_targets(pairs, settings, dt, contact_rows, zeta);
-  for (size_t i = 0; i < contact_rows.size(); ++i) {
-    rows.push_back(velocity_rows[contact_rows[i]]);
-    rows.back().zeta = zeta[i];
   }
 }
 

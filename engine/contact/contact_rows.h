@@ -5,16 +5,19 @@
 //   friction row  J = [−uᵀ  −(r1×u)ᵀ  uᵀ  (r2×u)ᵀ]  −μ λc ≤ λ ≤ μ λc               (chapter 4)
 //   u1 = z × n (in the plane); u2 = z (the text's second tangent, optional: its λ is 0)
 //   ζ/Δt = −β min(C + slop, 0) / Δt    the push-out of eq. 4-4, 4-5 (with a slop)
-//   gap:  −C / Δt when C > 0            a cached point that opened a gap may close it (notes fix 6)
+//   gap:  −C / Δt when C > 0            a cached point that opened a gap may close it within
+//                                       the step, no faster (a zero target there makes boxes
+//                                       hover and stacks creep)
 //   bounce: −e (J V) when J V < −v_e    restitution, beyond the text (Box2D's rule)
 // ConstraintRow::zeta is the velocity J V(t+Δt) must reach (eq. 3-15), so the text's distance
-// ζ of eq. 4-4 is stored divided by Δt, as eq. 4-5 uses it.
-// A row with a static body keeps only the other body's block, as eq. 5-8 writes it.
+// ζ of eq. 4-4 is stored divided by Δt, as eq. 4-5 uses it. The rows are point rows
+// (jacobian_rows.h): a static body holds no block, as eq. 5-8 writes it.
 #pragma once
 
 #include <vector>
 
 #include "constraints/constraint_row.h"
+#include "constraints/step_settings.h"
 #include "contact/contact.h"
 #include "motion/rigid_body.h"
 
@@ -27,51 +30,29 @@ enum class PositionCorrection {
 };
 
 struct ContactSettings {
-  double beta = 0.2;                   // β of eq. 4-4: fraction of the penetration removed per step
   double slop = 0.005;                 // penetration left alone, in m (Box2D's b2_linearSlop)
   double restitution_threshold = 1.0;  // v_e: slower approaches do not bounce, in m/s (Box2D's)
   PositionCorrection correction = PositionCorrection::split_impulse;  // see above
   bool out_of_plane_friction = false;  // add the u2 = z friction row too
 };
 
-// What a row of the velocity MLCP stands for.
-enum class RowKind {
-  contact,                // a contact row, eq. 4-3 (0 ≤ λ)
-  friction,               // the friction row along u1 = z × n (|λ| ≤ μ λc)
-  out_of_plane_friction,  // the text's second tangent u2 = z (its λ is 0 in the plane)
-  joint                   // a joint's row (engine/constraints)
-};
+// Throws std::invalid_argument naming the first setting out of range.
+void validate(const ContactSettings& settings);
 
-// Friction rows per contact of a pair: none when μ = 0 (their bounds would be ±0), u1, and u2
-// when asked for.
-int friction_rows_per_contact(const ContactPair& pair, const ContactSettings& settings);
+// Appends the rows of every pair, with each row's warm-start λ (the cache's) appended to
+// `lambda`: the pair's contact rows, then its friction rows (below their contact rows, as the
+// text orders them, so a friction bound reads the λc updated in the same sweep). Records where
+// they went: each pair's `rows`, each contact's `row` and `friction_rows`. Uses β and Δt.
+void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
+                      const ContactSettings& settings, const StepSettings& step,
+                      std::vector<ConstraintRow>& rows, std::vector<double>& lambda);
 
-// Appends the rows of every pair, from the first row of `rows` on: the pair's contact rows,
-// then its friction rows (below their contact rows, as the text orders them, so a friction
-// bound reads the λc updated in the same sweep), with their warm start λ from the cache and
-// their kinds.
-void add_contact_rows(const std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
-                      const ContactSettings& settings, double dt, std::vector<ConstraintRow>& rows,
-                      std::vector<double>& warm_start, std::vector<RowKind>& kinds);
+// Stores the solved λ of each contact's rows into the cache (the next step's warm start).
+void store_contact_lambdas(std::vector<ContactPair>& pairs, const double* lambda);
 
-// Stores the solved λ of the rows add_contact_rows appended (from row 0) into the cache.
-void store_contact_lambdas(std::vector<ContactPair>& pairs, const std::vector<double>& lambda,
-                           const ContactSettings& settings);
-
-// Split impulse: for each contact, the index of its contact row among the rows add_contact_rows
-// appended (from row 0), and the ζ the same row asks of the position solve: J V_p ≥ push-out
-// (or gap). `rows` and `zeta` are overwritten.
+// Split impulse: each contact's contact row, and the ζ the same row asks of the position solve,
+// J V_p ≥ push-out (or gap). `rows` and `zeta` are overwritten.
 void position_targets(const std::vector<ContactPair>& pairs, const ContactSettings& settings,
-                      double dt, std::vector<int>& rows, std::vector<double>& zeta);
-
-// Split impulse: the contact rows of add_contact_rows (in `velocity_rows` from row 0) again, one
-// per contact, with the ζ of position_targets: the position MLCP's rows, appended to `rows`.
-void add_position_rows(const std::vector<ContactPair>& pairs,
-                       const std::vector<ConstraintRow>& velocity_rows,
-                       const ContactSettings& settings, double dt,
-                       std::vector<ConstraintRow>& rows);
-
-// J V of a row at the bodies' current velocities (eq. 5-4, 5-5: the contact point's velocity along n).
-double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodies);
+                      const StepSettings& step, std::vector<int>& rows, std::vector<double>& zeta);
 
 }  // namespace lamina

@@ -2,24 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
+#include "kinematics/require.h"
+
 namespace lamina {
-namespace {
-
-void require(bool ok, const std::string& message) {
-  if (!ok) throw std::invalid_argument(message);
-}
-
-bool positive(double value) { return std::isfinite(value) && value > 0.0; }
-
-}  // namespace
 
 Shape Shape::box(double half_x, double half_y) {
-  require(positive(half_x) && positive(half_y),
-          "shape: box half extents must be finite and positive, got (" + std::to_string(half_x) +
-              ", " + std::to_string(half_y) + ")");
   Shape shape;
   shape.kind = Kind::box;
   shape.half_extents = Vec2(half_x, half_y);
@@ -27,8 +16,6 @@ Shape Shape::box(double half_x, double half_y) {
 }
 
 Shape Shape::circle(double radius) {
-  require(positive(radius),
-          "shape: circle radius must be finite and positive, got " + std::to_string(radius));
   Shape shape;
   shape.kind = Kind::circle;
   shape.radius = radius;
@@ -54,6 +41,15 @@ bool contains(const Shape& shape, const Pose2& pose, const Vec2& point, double t
   const Vec2 r = pose.to_body(point);
   if (!shape.is_box()) return r.norm() <= shape.radius + tolerance;
   return (r.cwiseAbs() - shape.half_extents).maxCoeff() <= tolerance;
+}
+
+void validate(const Shape& shape) {
+  if (shape.is_box()) {
+    require_positive(shape.half_extents.x(), "shape: box half extent x");
+    require_positive(shape.half_extents.y(), "shape: box half extent y");
+  } else {
+    require_positive(shape.radius, "shape: circle radius");
+  }
 }
 
 void validate(const Material& material) {

@@ -18,16 +18,18 @@ struct Shape {
   Vec2 half_extents = Vec2(0.5, 0.5);      // (hx, hy) of a box, in m
   double radius = 0.0;                      // ρ of a circle, in m
 
-  // Throw std::invalid_argument unless the sizes are finite and positive.
+  // Sizes are checked where a shape enters a World (validate below).
   static Shape box(double half_x, double half_y);
   static Shape circle(double radius);
 
   bool is_box() const { return kind == Kind::box; }
 };
 
-// How two bodies rub and bounce. Box2D's fixture defaults, so comparisons start equal.
+// How two bodies rub and bounce. One default friction for scene files and code alike: 0.6, what
+// every Lamina scene uses (wood on wood, rubber on concrete are 0.4 to 0.8). Box2D's fixtures
+// default to 0.2, so a comparison with Box2D gives both engines μ explicitly.
 struct Material {
-  double friction = 0.2;     // μ, dimensionless, ≥ 0
+  double friction = 0.6;     // μ, dimensionless, ≥ 0 (scene files' default too; see below)
   double restitution = 0.0;  // e, the fraction of approach speed returned, in [0, 1]
 };
 
@@ -54,6 +56,8 @@ Aabb bounding_box(const Shape& shape, const Pose2& pose);
 // Whether a world point lies inside the shape at a pose, or outside by at most `tolerance` (m).
 bool contains(const Shape& shape, const Pose2& pose, const Vec2& point, double tolerance);
 
+// Throws std::invalid_argument unless the shape's sizes are finite and positive.
+void validate(const Shape& shape);
 // Throws std::invalid_argument unless μ ≥ 0 and 0 ≤ e ≤ 1, both finite.
 void validate(const Material& material);
 

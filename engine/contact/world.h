@@ -5,14 +5,17 @@
 //     1. forces      F_ext = m g + whatever was applied since the last step       (eq. 5-2)
 //     2. collision   broad phase (sort and sweep), then each pair's deepest point  (Fig 4-2)
 //     3. cache       cached points re-placed (eq. 5-12), fresh ones merged         (Fig 4-2..4-5)
-//     4. rows        contact rows (eq. 4-3, 5-8), each followed by its friction
-//                    row(s), then the joints' rows                                (eq. 5-11, 5-19)
-//     5. solve       J B λ = η by PGS, warm started from the cached λ            (eq. 3-16, 5-21)
+//     4. rows        contact rows (eq. 4-3, 5-8), each pair's followed by its friction
+//                    rows, then the joints' rows; each pair and joint records where its
+//                    rows went (the row map)                                       (eq. 5-11, 5-19)
+//     5. solve       the MLCP, assembled once: J B λ = η by PGS, warm started from the
+//                    cached λ                                                      (eq. 3-16, 5-21)
 //     6. forces Jᵀλ  F_c = Jᵀ λ added to each body                                (eq. 3-11, 5-9)
 //     7. integrate   chapter 2's step under F_ext + F_c                          (eq. 2-1..2-8)
 //   λ is a force; the impulse over the step is λ Δt. With split impulse (the default, beyond
 //   the text) step 5 also solves for the push-out velocity, which step 7 lends to the bodies
 //   for the position update only.
+// Step k goes from t = k Δt to t = (k + 1) Δt.
 #pragma once
 
 #include <cstddef>
@@ -22,7 +25,9 @@
 
 #include "constraints/constrained_step.h"
 #include "constraints/constraint.h"
+#include "constraints/mlcp.h"
 #include "constraints/pgs_solver.h"
+#include "constraints/step_settings.h"
 #include "contact/contact_cache.h"
 #include "contact/contact_rows.h"
 #include "contact/world_report.h"
@@ -30,11 +35,9 @@
 namespace lamina {
 
 struct WorldSettings {
-  Vec3 gravity = Vec3(0.0, -9.8, 0.0);  // g, in m/s²; y is up (the text's chapter 5 has z up)
-  double dt = 1.0 / 60.0;               // Δt, in s
-  int iterations = 10;                  // PGS sweeps of the velocity MLCP; 0 keeps the warm start
+  StepSettings step;                    // g, Δt, β (of contacts and joints), PGS sweeps
   int position_iterations = 3;          // PGS sweeps of the split-impulse position MLCP (Box2D: 3)
-  ContactSettings contact;              // β (the joints' too), slop, restitution, correction
+  ContactSettings contact;              // slop, restitution, position correction
   CacheSettings cache;                  // the contact cache on or off, and its margins
 };
 
@@ -56,26 +59,42 @@ class World {
   // A dynamic disc of the given density and radius.
   int add_circle(double density, double radius, const Vec3& x,
                  const Material& material = Material());
-  // Adds a joint (engine/constraints); its rows follow the contact rows every step. Two bodies
-  // joined by a joint do not collide with each other (Box2D's default, collideConnected false).
-  // Throws std::invalid_argument for a joint whose rows act on static bodies only (d = 0).
-  void add_joint(std::unique_ptr<Constraint> joint);
+  // Adds a joint (engine/constraints) and returns its index; its rows follow the contact rows
+  // every step. Two bodies joined by a joint do not collide with each other (Box2D's default,
+  // collideConnected false). Throws std::invalid_argument for a joint that names a body the
+  // world does not have, or that joins static bodies or the world only (it can move nothing,
+  // and PGS would divide by d = 0).
+  int add_joint(std::unique_ptr<Constraint> joint);
+  // Adds force f at world point p to a dynamic body before the next step (eq. 1-31..1-33).
+  // Throws std::invalid_argument for a static body, or an f or p that is not finite or leaves
+  // the plane.
+  void apply_force_at(int body, const Vec3& f, const Vec3& p);
 
   // Advances the world by Δt. The second form also fills `report` with what was solved.
   void step();
   void step(WorldReport& report);
+  // Steps taken by all the Worlds of this process so far: how a test sees that a program
+  // simulated its run once (tests/cli/test_cli_simulation.cpp).
+  static long steps_in_process();
 
   const WorldSettings& settings() const { return settings_; }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
-  // A body, to apply a force or set a velocity between steps.
-  RigidBody& body(int index) { return bodies_.at(index); }
   const Shape& shape(int index) const { return shapes_.at(index); }
   double time() const { return time_; }  // t, in s
-  // The contacts solved in the last step (point, normal, cached or fresh, λ), pair by pair.
+  // The contacts solved in the last step (point, normal, cached or fresh, λ, their rows).
   const std::vector<ContactPair>& contact_pairs() const { return cache_.pairs(); }
   std::vector<ContactInfo> contacts() const { return contact_infos(cache_.pairs()); }
+  // The joints, in the order added, and where each one's rows sat in the last step.
+  int joint_count() const { return static_cast<int>(joints_.size()); }
+  const Constraint& joint(int index) const { return *joints_.at(index).constraint; }
+  RowRange joint_rows(int index) const { return joints_.at(index).rows; }
 
  private:
+  struct Joint {
+    std::unique_ptr<Constraint> constraint;
+    RowRange rows;  // its rows in the last step's MLCP
+  };
+
   void advance(WorldReport* report);
   void apply_forces();
   void detect_collisions();
@@ -83,7 +102,6 @@ class World {
   void build_rows();
   void solve(WorldReport* report);
   void solve_positions(WorldReport* report);
-  Mlcp position_mlcp() const;  // the split-impulse MLCP in the text's form, for a report
   void add_constraint_forces();
   void integrate_bodies();
 
@@ -92,7 +110,7 @@ class World {
   std::vector<RigidBody> bodies_;      // the bodies, in the order they were added
   std::vector<Shape> shapes_;          // bodies_[i]'s shape
   std::vector<Material> materials_;    // bodies_[i]'s friction and restitution
-  ConstraintList joints_;              // the joints, their rows after the contacts'
+  std::vector<Joint> joints_;          // the joints, their rows after the contacts'
   std::vector<BodyPair> jointed_;      // pairs of bodies joined by a joint, sorted: never collide
   ContactCache cache_;                 // the contacts kept from step to step
   WarmStart joint_warm_start_;         // the joints' λ from the last step
@@ -104,17 +122,16 @@ class World {
   std::vector<int> sweep_order_;             // bodies by min.x, kept for the next sort
   std::vector<BodyPair> candidate_pairs_;    // the broad phase's pairs
   std::vector<FreshCollision> fresh_;        // the narrow phase's deepest points
-  std::vector<ConstraintRow> rows_;          // the velocity MLCP's rows: contacts', then joints'
-  std::vector<ConstraintRow> joint_rows_;    // the joints' rows being built
-  std::vector<double> warm_start_;           // λ_exp for rows_, in N
-  std::vector<RowKind> kinds_;               // what each of rows_ stands for
+  std::vector<ConstraintRow> rows_;          // the rows as written: contacts', then joints'
+  std::size_t first_joint_row_ = 0;          // where the joints' rows start in rows_
   std::vector<Vec6> unconstrained_;          // V/Δt + M⁻¹ F_ext per body (eq. 3-16), m/s², rad/s²
-  PgsWorkspace velocity_solver_;             // the velocity MLCP (eq. 3-16), packed for PGS
-  std::vector<double> lambda_;               // its λ, in N
-  std::vector<int> position_rows_;           // split impulse: each contact's row in rows_
-  std::vector<double> position_eta_;         // and η = ζ/Δt of its position row, in m/s²
-  PgsWorkspace position_solver_;             // the position MLCP, packed for PGS
+  Mlcp velocity_;                            // the velocity MLCP (eq. 3-16), assembled once
+  std::vector<double> lambda_;               // its λ, in N: the warm start λ_exp, then solved
+  std::vector<int> position_rows_;           // split impulse: each contact's row in velocity_
+  std::vector<double> position_zeta_;        // and the push-out ζ of its position row, in m/s
+  Mlcp position_;                            // the position MLCP: those rows of velocity_
   std::vector<double> position_lambda_;      // its λ, in N
+  PgsSolver pgs_;                            // the sweeps' a = B λ, for both MLCPs in turn
   std::vector<Vec6> push_out_;               // split impulse: each body's [v; ω] push-out, m/s, rad/s
 };
 

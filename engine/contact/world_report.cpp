@@ -2,18 +2,6 @@
 
 namespace lamina {
 
-Vec6 constraint_wrench(const StepReport& report, int body) {
-  Vec6 wrench = Vec6::Zero();
-  for (size_t i = 0; i < report.mlcp.rows.size(); ++i) {
-    const ConstraintRow& row = report.mlcp.rows[i];
-    for (int k = 0; k < 2; ++k) {
-      // eq. 3-11: F_c = Jᵀ λ, body b's block
-      if (row.Jmap[k] == body) wrench += report.solution.lambda[static_cast<Eigen::Index>(i)] * row.Jsp[k];
-    }
-  }
-  return wrench;
-}
-
 std::vector<ContactInfo> contact_infos(const std::vector<ContactPair>& pairs) {
   std::vector<ContactInfo> infos;
   for (const ContactPair& pair : pairs) {
@@ -25,5 +13,7 @@ std::vector<ContactInfo> contact_infos(const std::vector<ContactPair>& pairs) {
   }
   return infos;
 }
+
+std::vector<ContactInfo> WorldReport::contacts() const { return contact_infos(pairs); }
 
 }  // namespace lamina

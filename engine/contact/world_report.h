@@ -1,20 +1,25 @@
-// What one World::step solved, for the tutorials' step-through output and for tests.
-// Filled only when a report is asked for; the ordinary step records nothing.
+// What one World::step solved, for explanations, frames and tests. Filled only when a report is
+// asked for; the ordinary step records nothing.
 //
-//   contacts   every contact point solved: where, which way, fresh or cached, its λ
-//   velocity   the MLCP of eq. 3-16: rows (J, ζ, bounds, body indices), η, d, λ_exp, λ,
-//              the residual after every PGS sweep, and W = J B λ − η (eq. 3-23)
+//   bodies     the bodies at t, before the step (the World holds them at t + Δt after it)
+//   pairs      every contact pair solved: its points (where, which way, fresh or cached, λ) and
+//              where its rows sit in the velocity MLCP (ContactPair::rows, Contact::row)
+//   joints     where each joint's rows sit, in the order the joints were added
+//   velocity   the MLCP of eq. 3-16 as assembled, λ_exp, λ and the residual after every sweep
 //   position   split impulse only: the position MLCP (ζ = push-out, no V or F_ext terms)
+// Row i of the velocity MLCP is a contact row, a friction row or a joint's row: the row map
+// above says which, as the step recorded it.
 #pragma once
 
 #include <vector>
 
+#include "constraints/constraint_row.h"
 #include "constraints/step_report.h"
-#include "contact/contact_rows.h"
+#include "contact/contact.h"
 
 namespace lamina {
 
-// One contact point as solved, in world terms (for rendering and reports).
+// One contact point as solved, in world terms (for rendering, traces and reports).
 struct ContactInfo {
   BodyPair bodies;              // (body 1, body 2), indices into World::bodies()
   Vec3 point = Vec3::Zero();    // c, world frame, in m
@@ -26,18 +31,18 @@ struct ContactInfo {
 };
 
 struct WorldReport {
-  double time = 0.0;                 // t at the start of the step, in s
-  std::vector<ContactInfo> contacts; // in row order: contact k owns the rows of its kind below
-  std::vector<RowKind> kinds;        // what each velocity row stands for
-  StepReport velocity;               // the velocity MLCP, eq. 3-16, and its PGS solution
-  StepReport position;               // the split-impulse position MLCP (empty for Baumgarte)
+  double time = 0.0;                // t at the start of the step, in s
+  std::vector<RigidBody> bodies;    // the bodies at t
+  std::vector<ContactPair> pairs;   // the contact pairs solved, with their rows
+  std::vector<RowRange> joints;     // each joint's rows
+  StepReport velocity;              // the velocity MLCP, eq. 3-16, and its PGS solution
+  StepReport position;              // the split-impulse position MLCP (empty for Baumgarte)
+
+  // The contact points solved, pair by pair, in row order.
+  std::vector<ContactInfo> contacts() const;
 };
 
-// The constraint force and torque F_c = J_bᵀ λ on body b of a solved MLCP (eq. 3-11, 5-9):
-// [f_c; τ_c], the torque about the body's centre, in N and N·m.
-Vec6 constraint_wrench(const StepReport& report, int body);
-
-// The contacts of the cache's pairs, in row order.
+// The contacts of the pairs, in row order.
 std::vector<ContactInfo> contact_infos(const std::vector<ContactPair>& pairs);
 
 }  // namespace lamina

@@ -1,11 +1,11 @@
 #include "motion/rigid_body.h"
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 #include "kinematics/inertia.h"
 #include "kinematics/quaternion.h"
+#include "kinematics/require.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -16,14 +16,10 @@ namespace {
 // A unit quaternion stays within this of norm 1 after the caller's own normalisation.
 constexpr double unit_tolerance = 1e-9;
 
-void require(bool ok, const std::string& message) {
-  if (!ok) throw std::invalid_argument("rigid body: " + message);
-}
-
 void require_pose(const Vec3& x, const Quat& q) {
-  require(x.allFinite(), "position is not finite");
+  require(x.allFinite(), "rigid body: position is not finite");
   require(q.coeffs().allFinite() && std::abs(q.norm() - 1.0) <= unit_tolerance,
-          "orientation is not a unit quaternion (|q| = " + std::to_string(q.norm()) + ")");
+          "rigid body: orientation is not a unit quaternion (|q| = " + std::to_string(q.norm()) + ")");
 }
 
 RigidBody placed(const Vec3& x, const Quat& q) {
@@ -38,11 +34,10 @@ RigidBody placed(const Vec3& x, const Quat& q) {
 
 RigidBody RigidBody::dynamic_body(double mass, const Mat3& inertia_body, const Vec3& x,
                                   const Quat& q) {
-  require(std::isfinite(mass) && mass > 0.0,
-          "mass must be finite and positive, got " + std::to_string(mass));
+  require_positive(mass, "rigid body: mass");
   require(inertia_body.allFinite() && inertia_body.isApprox(inertia_body.transpose()) &&
               inertia_body.llt().info() == Eigen::Success,
-          "inertia tensor must be finite, symmetric and positive definite");
+          "rigid body: inertia tensor must be finite, symmetric and positive definite");
   require_pose(x, q);
   RigidBody body;
   body.mass = mass;
@@ -95,21 +90,17 @@ double planar_angle(const Quat& q) {
 }
 
 RigidBody box_body(double density, double half_x, double half_y, const Vec3& x, double angle) {
-  require(std::isfinite(half_x) && std::isfinite(half_y) && half_x > 0.0 && half_y > 0.0,
-          "box half extents must be finite and positive, got (" + std::to_string(half_x) + ", " +
-              std::to_string(half_y) + ")");
-  require(std::isfinite(density) && density > 0.0,
-          "density must be finite and positive, got " + std::to_string(density));
+  require_positive(half_x, "rigid body: box half extent x");
+  require_positive(half_y, "rigid body: box half extent y");
+  require_positive(density, "rigid body: density");
   const double mass = density * 4.0 * half_x * half_y * planar_depth;
   return RigidBody::dynamic_body(mass, box_inertia(mass, half_x, half_y), x,
                                  planar_orientation(angle));
 }
 
 RigidBody disc_body(double density, double radius, const Vec3& x, double angle) {
-  require(std::isfinite(radius) && radius > 0.0,
-          "disc radius must be finite and positive, got " + std::to_string(radius));
-  require(std::isfinite(density) && density > 0.0,
-          "density must be finite and positive, got " + std::to_string(density));
+  require_positive(radius, "rigid body: disc radius");
+  require_positive(density, "rigid body: density");
   const double mass = density * M_PI * radius * radius * planar_depth;
   return RigidBody::dynamic_body(mass, disc_inertia(mass, radius), x, planar_orientation(angle));
 }

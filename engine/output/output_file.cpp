@@ -46,17 +46,34 @@ void check_writable(const fs::path& folder) {
 
 }  // namespace
 
-OutputFile::OutputFile(fs::path path) : path_(std::move(path)), temporary_(temporary_path(path_)) {
+TemporaryFile::TemporaryFile(fs::path path)
+    : path_(std::move(path)), temporary_(temporary_path(path_)), unfinished_(temporary_) {
   check_destination(path_);
-  out_.open(temporary_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw cannot_write(path_, std::strerror(errno));
 }
 
-OutputFile::~OutputFile() {
+TemporaryFile::~TemporaryFile() {
   if (committed_) return;
-  out_.close();
   std::error_code ignored;
   fs::remove(temporary_, ignored);
+}
+
+void TemporaryFile::commit() {
+  std::error_code error;
+  fs::rename(temporary_, path_, error);
+  if (error) fail(error.message());
+  unfinished_.finished();
+  committed_ = true;
+}
+
+void TemporaryFile::fail(const std::string& why) {
+  std::error_code ignored;
+  fs::remove(temporary_, ignored);
+  throw cannot_write(path_, why);
+}
+
+OutputFile::OutputFile(fs::path path) : file_(std::move(path)) {
+  out_.open(file_.temporary(), std::ios::binary | std::ios::trunc);
+  if (!out_) throw cannot_write(file_.path(), std::strerror(errno));
 }
 
 void OutputFile::write(std::string_view text) {
@@ -67,17 +84,12 @@ void OutputFile::write(std::string_view text) {
 void OutputFile::commit() {
   out_.close();
   if (!out_) fail(std::strerror(errno));
-  std::error_code error;
-  fs::rename(temporary_, path_, error);
-  if (error) fail(error.message());
-  committed_ = true;
+  file_.commit();
 }
 
 void OutputFile::fail(const std::string& why) {
   out_.close();
-  std::error_code ignored;
-  fs::remove(temporary_, ignored);
-  throw cannot_write(path_, why);
+  file_.fail(why);
 }
 
 void write_file_atomically(const fs::path& path, std::string_view text) {
@@ -89,6 +101,14 @@ void write_file_atomically(const fs::path& path, std::string_view text) {
 void write_file_atomically(const fs::path& path, const std::vector<std::uint8_t>& bytes) {
   const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
   write_file_atomically(path, text);
+}
+
+void make_file_atomically(const fs::path& path,
+                          const std::function<std::string(const fs::path&)>& make) {
+  TemporaryFile file(path);
+  const std::string why = make(file.temporary());
+  if (!why.empty()) file.fail(why);
+  file.commit();
 }
 
 void prepare_output_folder(const fs::path& folder) {

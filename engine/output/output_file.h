@@ -2,16 +2,21 @@
 // "<path>.tmp", and renamed into place when whole (atomic on one file system), so a reader never
 // sees half a file, and a run that fails or dies before then leaves nothing at the path.
 // Traces stream through an OutputFile; frames and plot data are written whole by
-// write_file_atomically(), through the same OutputFile.
+// write_file_atomically(), through the same OutputFile; a file another program writes (a plot
+// gnuplot draws) goes through make_file_atomically(). All three share one TemporaryFile, which
+// registers the temporary as unfinished (unfinished_files.h) while it exists.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "output/unfinished_files.h"
 
 namespace lamina {
 
@@ -22,13 +27,41 @@ class OutputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The temporary file "<path>.tmp" a file is written under until it is whole: registered as
+// unfinished from before it is created, renamed to the path by commit(), removed otherwise.
+class TemporaryFile {
+ public:
+  // Creates the missing parent folders and registers the temporary; creates no file. Throws
+  // OutputError when the path is a folder or a device, or its folder cannot be made.
+  explicit TemporaryFile(std::filesystem::path path);
+  // Removes the temporary file unless commit() succeeded.
+  ~TemporaryFile();
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+
+  // Renames the temporary file to the path. Throws OutputError on failure, having removed the
+  // temporary file.
+  void commit();
+  // Removes the temporary file and throws OutputError: "cannot write '<path>': <why>".
+  [[noreturn]] void fail(const std::string& why);
+
+  const std::filesystem::path& path() const { return path_; }
+  const std::filesystem::path& temporary() const { return temporary_; }
+
+ private:
+  std::filesystem::path path_;       // where the file goes when complete
+  std::filesystem::path temporary_;  // where it is written until then
+  UnfinishedFile unfinished_;        // the temporary's registration, until renamed or removed
+  bool committed_ = false;
+};
+
 class OutputFile {
  public:
   // Creates the missing parent folders and opens the temporary file. Throws OutputError when
   // the path is a folder or a device, or cannot be written.
   explicit OutputFile(std::filesystem::path path);
-  // Removes the temporary file unless commit() succeeded.
-  ~OutputFile();
+  // Closes the temporary file, then removes it unless commit() succeeded (file_'s destructor).
+  ~OutputFile() = default;
   OutputFile(const OutputFile&) = delete;
   OutputFile& operator=(const OutputFile&) = delete;
 
@@ -38,15 +71,13 @@ class OutputFile {
   // having removed the temporary file.
   void commit();
 
-  const std::filesystem::path& path() const { return path_; }
+  const std::filesystem::path& path() const { return file_.path(); }
 
  private:
   [[noreturn]] void fail(const std::string& why);
 
-  std::filesystem::path path_;       // where the file goes when complete
-  std::filesystem::path temporary_;  // where it is written until then
-  std::ofstream out_;
-  bool committed_ = false;
+  TemporaryFile file_;  // the path and the temporary written until commit()
+  std::ofstream out_;   // open on file_.temporary()
 };
 
 // Writes `text` or `bytes` to `path` through an OutputFile. On failure the temporary file is
@@ -55,11 +86,19 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view t
 void write_file_atomically(const std::filesystem::path& path,
                            const std::vector<std::uint8_t>& bytes);
 
+// Calls `make` with the temporary path "<path>.tmp" to write the file there, e.g. by telling
+// another program to; `make` returns an empty string when it has, else why not. Then renames the
+// temporary to `path`. When `make` fails or throws, or the rename fails, the temporary is
+// removed and nothing is left at `path`; a failure is thrown as OutputError,
+// "cannot write '<path>': <why>".
+void make_file_atomically(const std::filesystem::path& path,
+                          const std::function<std::string(const std::filesystem::path&)>& make);
+
 // Creates `folder` (and its parents) if needed and checks that a file can be written in it.
 // Throws OutputError when it is a file, cannot be created or is not writable; leaves no file.
 void prepare_output_folder(const std::filesystem::path& folder);
 
-// The temporary name an OutputFile for `path` is written under: "<path>.tmp".
+// The temporary name a file for `path` is written under: "<path>.tmp".
 std::filesystem::path temporary_path(const std::filesystem::path& path);
 
 }  // namespace lamina

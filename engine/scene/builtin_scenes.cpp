@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <functional>
 #include <map>
 
 #include "scene/scene_json.h"
@@ -12,6 +11,7 @@ namespace lamina {
 namespace {
 
 constexpr double half = 0.5;  // half extent of the unit box, in m
+constexpr int pyramid_rows = 20;  // the boxes in the base of "pyramid"
 
 // The ground of every box-on-ground scene: a static box (20, 0.5) whose top is at y = 0.
 BodyDescription ground(double half_width = 20.0) {
@@ -33,11 +33,9 @@ BodyDescription box(const std::string& name, Vec2d position, Vec2d half_extents 
   return b;
 }
 
-Scene with(const std::string& name, const std::string& description,
-           std::vector<BodyDescription> bodies, std::vector<JointDescription> joints = {}) {
+// A scene of these bodies and joints; builtin_scene gives it its name and description.
+Scene with(std::vector<BodyDescription> bodies, std::vector<JointDescription> joints = {}) {
   Scene s;
-  s.name = name;
-  s.description = description;
   s.bodies = std::move(bodies);
   s.joints = std::move(joints);
   return s;
@@ -51,19 +49,19 @@ JointDescription revolute(const std::string& a, const std::string& b, Vec2d anch
   return j;
 }
 
-Scene box_on_ground(const std::string& name, double y, double angle, const std::string& what) {
-  return with(name, what, {ground(), box("box", {0.0, y}, {half, half}, angle)});
+Scene box_on_ground(double y, double angle) {
+  return with({ground(), box("box", {0.0, y}, {half, half}, angle)});
 }
 
 // A static ramp tilted by θ (a rotated box) with a box resting on its slope.
-Scene ramp(const std::string& name, const std::string& what, double theta, double friction) {
+Scene ramp(double theta, double friction) {
   BodyDescription slope = box("ramp", {0.0, 0.0}, {10.0, 0.5}, theta);
   slope.is_static = true;
   slope.friction = friction;
   const double lift = 0.5 + half;  // from the ramp's centre line to the box's centre
   BodyDescription block = box("box", {-lift * std::sin(theta), lift * std::cos(theta)}, {half, half}, theta);
   block.friction = friction;
-  return with(name, what, {slope, block});
+  return with({slope, block});
 }
 
 Scene pendulum() {
@@ -78,8 +76,7 @@ Scene pendulum() {
   rod.type = JointType::distance;
   rod.bodies = {"pivot", "bob"};
   rod.anchors = {Vec2d{0.0, 3.0}, Vec2d{2.0, 3.0}};
-  return with("pendulum", "a disc on a 2 m rod, released horizontal (distance constraint)",
-              {pivot, bob}, {rod});
+  return with({pivot, bob}, {rod});
 }
 
 Scene chain() {
@@ -94,14 +91,13 @@ Scene chain() {
     bodies.push_back(box(name, {0.25 + 0.5 * i, 6.0}, {0.25, 0.05}));
     joints.push_back(revolute(i == 0 ? "anchor" : "link" + std::to_string(i - 1), name, {0.5 * i, 6.0}));
   }
-  return with("chain", "eight links pinned end to end, released horizontal (revolute joints)",
-              bodies, joints);
+  return with(bodies, joints);
 }
 
 Scene vertical_stack() {
   std::vector<BodyDescription> bodies = {ground()};
   for (int i = 0; i < 5; ++i) bodies.push_back(box("box" + std::to_string(i), {0.0, half + 2 * half * i}));
-  return with("vertical-stack", "five boxes placed touching, one on another", bodies);
+  return with(bodies);
 }
 
 Scene dominoes() {
@@ -110,7 +106,7 @@ Scene dominoes() {
     bodies.push_back(box("domino" + std::to_string(i), {1.0 * i, 1.0}, {0.1, 1.0}));
   }
   bodies[1].angular_velocity = -1.5;
-  return with("dominoes", "ten dominoes; the first is pushed over", bodies);
+  return with(bodies);
 }
 
 Scene bridge() {
@@ -131,8 +127,7 @@ Scene bridge() {
   }
   joints.push_back(revolute(previous, "right-post", {5.0, 3.0}));
   bodies.push_back(box("load", {0.0, 4.0}));
-  return with("bridge", "ten planks pinned end to end between two posts, a box dropped on them",
-              bodies, joints);
+  return with(bodies, joints);
 }
 
 Scene see_saw() {
@@ -140,27 +135,42 @@ Scene see_saw() {
   base.is_static = true;
   BodyDescription plank = box("plank", {0.0, 1.1}, {3.0, 0.1});
   BodyDescription weight = box("weight", {-2.5, 3.0});
-  return with("see-saw", "a plank pinned on a post; a box dropped on one end",
-              {ground(), base, plank, box("counterweight", {2.5, 1.7}, {0.25, 0.25}), weight},
+  return with({ground(), base, plank, box("counterweight", {2.5, 1.7}, {0.25, 0.25}), weight},
               {revolute("base", "plank", {0.0, 1.1})});
 }
 
-using Maker = std::function<Scene()>;
+// What a pyramid of `rows` rows is, written once for the list and for every pyramid:N.
+std::string pyramid_description(int rows) {
+  return "a pyramid of " + std::to_string(rows * (rows + 1) / 2) + " boxes placed touching, " +
+         std::to_string(rows) + " in its base";
+}
 
-const std::map<std::string, Maker>& makers() {
-  static const std::map<std::string, Maker> table = {
-      {"box-on-ground", [] { return box_on_ground("box-on-ground", 2.0, 0.0, "a box dropped flat from y = 2 onto the ground"); }},
-      {"box-on-ground-tilted", [] { return box_on_ground("box-on-ground-tilted", 2.0, 0.3, "a box dropped from y = 2 tilted by 0.3 rad (Fig 4-2..4-5)"); }},
-      {"box-on-ground-resting", [] { return box_on_ground("box-on-ground-resting", half, 0.0, "a box placed resting on the ground"); }},
-      {"incline", [] { return ramp("incline", "a box on a frictionless 30° incline (Fig 3-1)", M_PI / 6, 0.0); }},
-      {"friction-ramp", [] { return ramp("friction-ramp", "a box on a 30° ramp with μ = 0.4 < tan 30°: it slides", M_PI / 6, 0.4); }},
-      {"pendulum", pendulum},
-      {"chain", chain},
-      {"vertical-stack", vertical_stack},
-      {"pyramid", [] { return pyramid_scene(20); }},
-      {"dominoes", dominoes},
-      {"bridge", bridge},
-      {"see-saw", see_saw},
+// A built-in scene: its description, written here once, and how to build the rest of it.
+struct Recipe {
+  std::string description;  // one line for `lamina scenes`, and the built scene's description
+  Scene (*build)();         // the scene but for its name and description
+};
+
+// Every built-in scene by name; the list reads it without building any scene.
+const std::map<std::string, Recipe>& recipes() {
+  static const std::map<std::string, Recipe> table = {
+      {"box-on-ground", {"a box dropped flat from y = 2 onto the ground",
+                         [] { return box_on_ground(2.0, 0.0); }}},
+      {"box-on-ground-tilted", {"a box dropped from y = 2 tilted by 0.3 rad (Fig 4-2..4-5)",
+                                [] { return box_on_ground(2.0, 0.3); }}},
+      {"box-on-ground-resting", {"a box placed resting on the ground",
+                                 [] { return box_on_ground(half, 0.0); }}},
+      {"incline", {"a box on a frictionless 30° incline (Fig 3-1)",
+                   [] { return ramp(M_PI / 6, 0.0); }}},
+      {"friction-ramp", {"a box on a 30° ramp with μ = 0.4 < tan 30°: it slides",
+                         [] { return ramp(M_PI / 6, 0.4); }}},
+      {"pendulum", {"a disc on a 2 m rod, released horizontal (distance constraint)", pendulum}},
+      {"chain", {"eight links pinned end to end, released horizontal (revolute joints)", chain}},
+      {"vertical-stack", {"five boxes placed touching, one on another", vertical_stack}},
+      {"pyramid", {pyramid_description(pyramid_rows), [] { return pyramid_scene(pyramid_rows); }}},
+      {"dominoes", {"ten dominoes; the first is pushed over", dominoes}},
+      {"bridge", {"ten planks pinned end to end between two posts, a box dropped on them", bridge}},
+      {"see-saw", {"a plank pinned on a post; a box dropped on one end", see_saw}},
   };
   return table;
 }
@@ -169,7 +179,7 @@ const std::map<std::string, Maker>& makers() {
 
 std::vector<BuiltinScene> builtin_scene_list() {
   std::vector<BuiltinScene> list;
-  for (const auto& [name, make] : makers()) list.push_back({name, make().description});
+  for (const auto& [name, recipe] : recipes()) list.push_back({name, recipe.description});
   return list;
 }
 
@@ -184,9 +194,14 @@ Scene builtin_scene(const std::string& name) {
     }
     return pyramid_scene(static_cast<int>(n));
   }
-  const auto it = makers().find(name);
-  if (it == makers().end()) throw SceneError(name + ": no such built-in scene (see `lamina scenes`)");
-  return it->second();
+  const auto it = recipes().find(name);
+  if (it == recipes().end()) {
+    throw SceneError(name + ": no such built-in scene (see `lamina scenes`)");
+  }
+  Scene scene = it->second.build();
+  scene.name = it->first;
+  scene.description = it->second.description;
+  return scene;
 }
 
 Scene pyramid_scene(int rows) {
@@ -198,9 +213,9 @@ Scene pyramid_scene(int rows) {
       bodies.push_back(box("r" + std::to_string(row) + "b" + std::to_string(i), {x, half + 2 * half * row}));
     }
   }
-  Scene s = with("pyramid", "a pyramid of " + std::to_string(rows * (rows + 1) / 2) +
-                 " boxes placed touching, " + std::to_string(rows) + " in its base", bodies);
-  if (rows != 20) s.name = "pyramid:" + std::to_string(rows);
+  Scene s = with(bodies);
+  s.name = rows == pyramid_rows ? "pyramid" : "pyramid:" + std::to_string(rows);
+  s.description = pyramid_description(rows);
   return s;
 }
 

@@ -6,24 +6,20 @@
 #include <iterator>
 #include <map>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "scene/json_layout.h"
 #include "scene/scene_limits.h"
+#include "scene/shortest_number.h"
 
 namespace lamina {
 namespace {
 
 using nlohmann::json;
 using scene_limits::Range;
-
-// A number in its shortest form that reads back to the same double, without a trailing ".0".
-std::string shortest(double value) {
-  std::string text = json(value).dump();
-  if (text.size() > 2 && text.compare(text.size() - 2, 2, ".0") == 0) text.resize(text.size() - 2);
-  return text;
-}
 
 // Walks a JSON document, knowing where it is, and throws one SceneError line per problem.
 class Reader {
@@ -51,26 +47,15 @@ class Reader {
     return value;
   }
 
-  double positive(const json& j, const std::string& path) const {
-    const double value = number(j, path);
-    if (value <= 0.0) fail(path, "must be positive, got " + shortest(value));
-    return value;
-  }
-
   double in_range(const json& j, const std::string& path, Range<double> range) const {
     const double value = number(j, path);
     if (value < range.low || value > range.high) {
-      fail(path, "must be in [" + shortest(range.low) + ", " + shortest(range.high) + "], got " +
-                     shortest(value));
+      fail(path, "must be in [" + shortest_number(range.low) + ", " + shortest_number(range.high) +
+                     "], got " + shortest_number(value));
     }
     return value;
   }
 
-  // A size or density: "must be positive" for zero or less, then the range.
-  double positive_in(const json& j, const std::string& path, Range<double> range) const {
-    positive(j, path);
-    return in_range(j, path, range);
-  }
 
   int count(const json& j, const std::string& path, Range<int> range) const {
     if (!j.is_number_integer()) {
@@ -120,11 +105,16 @@ class Reader {
     if (obj.contains(key)) fail(join(path, key), why);
   }
 
-  static std::string join(const std::string& path, const std::string& key) {
-    return path.empty() ? key : path + "." + key;
+  // "bodies[2]" and "angle" make "bodies[2].angle"; "bodies" and 2 make "bodies[2]". `path` is
+  // taken by value so that a long path can be moved in and grown in place.
+  static std::string join(std::string path, const std::string& key) {
+    if (!path.empty()) path += '.';
+    path += key;
+    return path;
   }
-  static std::string at(const std::string& path, size_t index) {
-    return path + "[" + std::to_string(index) + "]";
+  static std::string at(std::string path, size_t index) {
+    path += "[" + std::to_string(index) + "]";
+    return path;
   }
 
  private:
@@ -138,6 +128,67 @@ class Reader {
   }
 
   std::string origin_;
+};
+
+// nlohmann-json keeps the last of two equal keys in an object, so a file with "angle" twice in a
+// body would run with one of them silently dropped. The parser reports each step of its reading
+// here (json::parse's callback), and a key its object has already is refused. The objects and
+// arrays open at that point are kept in a vector, never on the call stack: a file may nest
+// 150 000 arrays (see Reader::count).
+class DuplicateKeys {
+ public:
+  explicit DuplicateKeys(const Reader& reader) : reader_(reader) {}
+
+  void on(json::parse_event_t event, const json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        start_value();
+        levels_.push_back({event == json::parse_event_t::object_start, {}, {}, 0});
+        break;
+      case json::parse_event_t::key: {
+        Level& object = levels_.back();
+        object.key = parsed.get<std::string>();
+        if (!object.keys.insert(object.key).second) {
+          reader_.fail(path(), "duplicate key: the object has \"" + object.key + "\" already");
+        }
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        levels_.pop_back();
+        break;
+      case json::parse_event_t::value:
+        start_value();
+        break;
+    }
+  }
+
+ private:
+  struct Level {
+    bool is_object;
+    std::set<std::string> keys;  // an object's keys so far
+    std::string key;             // an object's latest key
+    size_t elements;             // an array's elements so far
+  };
+
+  // A value begins; in an array it is the next element.
+  void start_value() {
+    if (!levels_.empty() && !levels_.back().is_object) ++levels_.back().elements;
+  }
+
+  // The path of the latest key, written as the Reader writes paths: "joints[0].anchor".
+  std::string path() const {
+    std::string p;
+    for (const Level& level : levels_) {
+      p = level.is_object ? Reader::join(std::move(p), level.key)
+                          : Reader::at(std::move(p), level.elements - 1);
+    }
+    return p;
+  }
+
+  const Reader& reader_;
+  std::vector<Level> levels_;  // the open objects and arrays, outermost first
 };
 
 // Reads obj[key] into `target` with the Reader method `read` when the key is present.
@@ -157,12 +208,12 @@ ShapeDescription read_shape(const Reader& r, const json& j, const std::string& p
     shape.type = ShapeType::box;
     const std::string hp = Reader::join(path, "half_extents");
     const json& he = r.array(r.required(j, path, "half_extents"), hp, 2);
-    shape.half_extents = {r.positive_in(he[0], Reader::at(hp, 0), scene_limits::size),
-                          r.positive_in(he[1], Reader::at(hp, 1), scene_limits::size)};
+    shape.half_extents = {r.in_range(he[0], Reader::at(hp, 0), scene_limits::size),
+                          r.in_range(he[1], Reader::at(hp, 1), scene_limits::size)};
   } else if (type == "circle") {
     r.forbid(j, path, "half_extents", "a circle has no half extents (use radius)");
     shape.type = ShapeType::circle;
-    shape.radius = r.positive_in(r.required(j, path, "radius"), Reader::join(path, "radius"),
+    shape.radius = r.in_range(r.required(j, path, "radius"), Reader::join(path, "radius"),
                                  scene_limits::size);
   } else {
     r.fail(type_path, "must be \"box\" or \"circle\", got \"" + type + "\"");
@@ -180,7 +231,7 @@ BodyDescription read_body(const Reader& r, const json& j, const std::string& pat
   optional(r, j, path, "position", body.position, &Reader::vec2, scene_limits::coordinate);
   optional(r, j, path, "angle", body.angle, &Reader::in_range, scene_limits::angle);
   optional(r, j, path, "static", body.is_static, &Reader::boolean);
-  optional(r, j, path, "density", body.density, &Reader::positive_in, scene_limits::density);
+  optional(r, j, path, "density", body.density, &Reader::in_range, scene_limits::density);
   optional(r, j, path, "friction", body.friction, &Reader::in_range, scene_limits::friction);
   optional(r, j, path, "restitution", body.restitution, &Reader::in_range,
            scene_limits::restitution);
@@ -190,9 +241,11 @@ BodyDescription read_body(const Reader& r, const json& j, const std::string& pat
   return body;
 }
 
-// `is_static` holds every body of the scene by name: whether it is static.
+// `bodies` holds every body of the scene by name. A joint's physical rules (two different bodies,
+// not both static, a rod of some length) are the engine's: build_world reports them with the
+// joint's JSON path.
 JointDescription read_joint(const Reader& r, const json& j, const std::string& path,
-                            const std::map<std::string, bool>& is_static) {
+                            const std::set<std::string>& bodies) {
   r.expect_object(j, path, {"type", "bodies", "anchor", "anchors"});
   JointDescription joint;
   const std::string type_path = Reader::join(path, "type");
@@ -202,17 +255,9 @@ JointDescription read_joint(const Reader& r, const json& j, const std::string& p
   const json& names = r.array(r.required(j, path, "bodies"), bp, 2);
   for (size_t k = 0; k < 2; ++k) {
     joint.bodies[k] = r.text(names[k], Reader::at(bp, k));
-    if (is_static.count(joint.bodies[k]) == 0) {
+    if (bodies.count(joint.bodies[k]) == 0) {
       r.fail(Reader::at(bp, k), "no body is named \"" + joint.bodies[k] + "\"");
     }
-  }
-  if (joint.bodies[0] == joint.bodies[1]) {
-    r.fail(bp, "a joint needs two different bodies, got \"" + joint.bodies[0] + "\" twice");
-  }
-  // Between two static bodies a joint's rows move nothing: d = J M⁻¹ Jᵀ = 0, and PGS divides by d.
-  if (is_static.at(joint.bodies[0]) && is_static.at(joint.bodies[1])) {
-    r.fail(bp, "a joint needs a body that moves, got the static bodies \"" + joint.bodies[0] +
-                   "\" and \"" + joint.bodies[1] + "\"");
   }
   if (type == "revolute") {
     r.forbid(j, path, "anchors", "a revolute joint has one world anchor (use anchor)");
@@ -226,11 +271,6 @@ JointDescription read_joint(const Reader& r, const json& j, const std::string& p
     const json& anchors = r.array(r.required(j, path, "anchors"), ap, 2);
     joint.anchors = {r.vec2(anchors[0], Reader::at(ap, 0), scene_limits::coordinate),
                      r.vec2(anchors[1], Reader::at(ap, 1), scene_limits::coordinate)};
-    // A rod of length 0 has no direction u = d/|d| to hold; DistanceConstraint refuses it too
-    if (joint.anchors[0] == joint.anchors[1]) {
-      r.fail(ap, "the rod's two ends coincide, so it has no length "
-                 "(a revolute joint pins two bodies)");
-    }
   } else {
     r.fail(type_path, "must be \"revolute\" or \"distance\", got \"" + type + "\"");
   }
@@ -249,18 +289,18 @@ Scene read_scene(const Reader& r, const json& j) {
   optional(r, j, "", "beta", scene.beta, &Reader::in_range, scene_limits::beta);
   optional(r, j, "", "steps", scene.steps, &Reader::count, scene_limits::steps);
   const json& bodies = r.array(r.required(j, "", "bodies"), "bodies", 0);
-  std::map<std::string, bool> is_static;  // every body so far, by name
+  std::set<std::string> names;  // every body so far
   for (size_t i = 0; i < bodies.size(); ++i) {
     scene.bodies.push_back(read_body(r, bodies[i], Reader::at("bodies", i)));
     const BodyDescription& body = scene.bodies.back();
-    if (!is_static.emplace(body.name, body.is_static).second) {
+    if (!names.insert(body.name).second) {
       r.fail(Reader::at("bodies", i) + ".name", "duplicate body name \"" + body.name + "\"");
     }
   }
   if (j.contains("joints")) {
     const json& joints = r.array(j.at("joints"), "joints", 0);
     for (size_t i = 0; i < joints.size(); ++i) {
-      scene.joints.push_back(read_joint(r, joints[i], Reader::at("joints", i), is_static));
+      scene.joints.push_back(read_joint(r, joints[i], Reader::at("joints", i), names));
     }
   }
   return scene;
@@ -306,7 +346,11 @@ Scene parse_scene(const std::string& json_text, const std::string& origin) {
   const Reader reader(origin);
   json document;
   try {
-    document = json::parse(json_text);
+    DuplicateKeys duplicates(reader);
+    document = json::parse(json_text, [&duplicates](int, json::parse_event_t event, json& parsed) {
+      duplicates.on(event, parsed);
+      return true;  // keep every value
+    });
   } catch (const json::parse_error& e) {
     throw SceneError(origin + ": not valid JSON: " + e.what());
   } catch (const json::out_of_range& e) {

@@ -2,6 +2,7 @@
 
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "constraints/distance_constraint.h"
@@ -21,14 +22,12 @@ int add_body(World& world, const BodyDescription& desc) {
   if (desc.is_static) {
     return world.add_body(RigidBody::static_body(x, planar_orientation(desc.angle)), shape, material);
   }
-  const int index =
-      s.type == ShapeType::box
-          ? world.add_box(desc.density, s.half_extents[0], s.half_extents[1], x, desc.angle, material)
-          : world.add_body(disc_body(desc.density, s.radius, x, desc.angle), shape, material);
-  RigidBody& body = world.body(index);
+  RigidBody body = s.type == ShapeType::box
+                       ? box_body(desc.density, s.half_extents[0], s.half_extents[1], x, desc.angle)
+                       : disc_body(desc.density, s.radius, x, desc.angle);
   body.v = planar(desc.velocity);
   body.angular_velocity = Vec3(0.0, 0.0, desc.angular_velocity);
-  return index;
+  return world.add_body(body, shape, material);
 }
 
 std::unique_ptr<Constraint> make_joint(const World& world, const JointDescription& desc, int a, int b) {
@@ -43,23 +42,40 @@ std::unique_ptr<Constraint> make_joint(const World& world, const JointDescriptio
                                               (end_b - end_a).norm());
 }
 
+// Runs `add`; an engine refusal is rethrown with the JSON path of the scene's value in front.
+template <class Add>
+auto at_path(const std::string& path, Add&& add) {
+  try {
+    return add();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(path + ": " + e.what());
+  }
+}
+
 }  // namespace
 
 WorldSettings world_settings(const Scene& scene) {
   WorldSettings settings;
-  settings.gravity = planar(scene.gravity);
-  settings.dt = scene.dt;
-  settings.iterations = scene.iterations;
-  settings.contact.beta = scene.beta;
+  settings.step.gravity = planar(scene.gravity);
+  settings.step.dt = scene.dt;
+  settings.step.iterations = scene.iterations;
+  settings.step.beta = scene.beta;
   return settings;
 }
 
 World build_world(const Scene& scene, const WorldSettings& settings) {
   World world(settings);
   std::map<std::string, int> index_of;
-  for (const BodyDescription& desc : scene.bodies) index_of[desc.name] = add_body(world, desc);
-  for (const JointDescription& joint : scene.joints) {
-    world.add_joint(make_joint(world, joint, index_of.at(joint.bodies[0]), index_of.at(joint.bodies[1])));
+  for (size_t i = 0; i < scene.bodies.size(); ++i) {
+    const BodyDescription& desc = scene.bodies[i];
+    index_of[desc.name] = at_path("bodies[" + std::to_string(i) + "]", [&] { return add_body(world, desc); });
+  }
+  for (size_t i = 0; i < scene.joints.size(); ++i) {
+    const JointDescription& joint = scene.joints[i];
+    at_path("joints[" + std::to_string(i) + "] (\"" + joint.bodies[0] + "\", \"" + joint.bodies[1] + "\")", [&] {
+      return world.add_joint(make_joint(world, joint, index_of.at(joint.bodies[0]),
+                                        index_of.at(joint.bodies[1])));
+    });
   }
   return world;
 }

@@ -11,7 +11,7 @@ WorldSettings world_settings(const Scene& scene);
 
 // The scene's bodies, in order (World body i is scene.bodies[i]), with their shapes, materials,
 // initial velocities and joints. Joined bodies do not collide. Throws std::invalid_argument for
-// a value the engine refuses.
+// a value the engine refuses, its message led by the JSON path of the value ("joints[1]: ...").
 World build_world(const Scene& scene, const WorldSettings& settings);
 
 }  // namespace lamina

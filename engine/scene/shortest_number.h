@@ -1,13 +1,17 @@
-// Numbers in traces: the shortest text that reads back to the same double (std::to_chars), so a
-// trace holds the run's state exactly. Whole numbers keep a ".0" ("2.0", "-0.0"), so that every
-// value reads as a floating-point number in JSON and spreadsheet tools alike.
+// Numbers as text: the shortest text that reads back to the same double (std::to_chars), so a
+// trace holds the run's state exactly and a message shows the very value it refuses.
 #pragma once
 
 #include <string>
 
 namespace lamina {
 
-// Appends x in that form; a non-finite x as "inf", "-inf" or "nan".
+// x in that form: "0.5", "2", "-0", "1e+06"; a non-finite x as "inf", "-inf" or "nan".
+// Messages show numbers so: "must be in [0, 1], got 1.5".
+std::string shortest_number(double x);
+
+// Appends x in that form, with ".0" on whole numbers ("2.0", "-0.0"), so that every value of a
+// trace reads as a floating-point number in JSON and spreadsheet tools alike.
 void append_shortest(std::string& out, double x);
 
 }  // namespace lamina

@@ -80,7 +80,7 @@ double PyramidRun::us_per_row_sweep() const {
 PyramidRun run_lamina_pyramid(int base, int iterations) {
   const Scene scene = pyramid_scene(base);
   WorldSettings settings = world_settings(scene);
-  settings.iterations = iterations;
+  settings.step.iterations = iterations;
   World world = build_world(scene, settings);
   const auto where = [&] {
     Positions p;
@@ -90,10 +90,10 @@ PyramidRun run_lamina_pyramid(int base, int iterations) {
   const auto count_rows = [&](PyramidRun& run) {
     for (const ContactPair& pair : world.contact_pairs()) {
       run.contact_points += pair.count;
-      run.velocity_rows += pair.count * (1 + friction_rows_per_contact(pair, settings.contact));
+      run.velocity_rows += pair.rows.count;  // its contact and friction rows (the row map)
     }
     run.position_rows = run.contact_points;  // split impulse: one row per contact
-    run.velocity_iterations = settings.iterations;
+    run.velocity_iterations = settings.step.iterations;
     run.position_iterations = settings.position_iterations;
   };
   return run_pyramid(scene, [&] { world.step(); }, where, count_rows);
@@ -133,11 +133,11 @@ WarmStartRun measure_warm_start(int base, int first_step, int steps,
     WorldReport report;
     world.step(report);
     const Mlcp& mlcp = report.velocity.mlcp;
-    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(mlcp.eta.size());
-    const double at_zero = mlcp_residual(mlcp, zero);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(mlcp.row_count());
+    const double at_zero = mlcp.residual(zero.data());
     const double smallest = *std::min_element(reductions.begin(), reductions.end());
     // every sweep's residual, until the smallest one asked for
-    const PgsSettings record{max_sweeps, smallest * at_zero, true};
+    const SweepSettings record{max_sweeps, smallest * at_zero, true};
     const std::vector<double> warm = solve_pgs(mlcp, report.velocity.lambda_exp, record).residuals;
     const std::vector<double> cold = solve_pgs(mlcp, zero, record).residuals;
     for (size_t r = 0; r < reductions.size(); ++r) {

@@ -1,14 +1,19 @@
 #!/bin/sh
-# interrupt.sh <lamina> <folder> <INT|TERM> <trace|frames|view>
+# interrupt.sh <lamina> <folder> <INT|TERM> <trace|frames|recording|twice>
 # Starts a long `lamina run` writing into <folder>, sends it the signal once it has written
-# something (view: while it fits the frames' view, before its first step), and checks that it
-# stops as docs/lamina-command.md promises:
+# something (recording: while it simulates the run whose frames it records, before it renders
+# any; frames: while it renders them; twice: just after a step, then again once lamina has taken
+# the first), and checks that it stops as docs/lamina-command.md promises:
 #   - exit code 128 + the signal (130 for Ctrl-C's SIGINT, 143 for SIGTERM);
 #   - nothing on standard output, one line on standard error: "lamina: SCENE: interrupted after
-#     step N; trace -> FILE holds steps 1..N[, M frames -> DIR]" (SIGTERM: "terminated");
-#   - the trace holds steps 1..N, every line whole; the M frames (steps 0, 3, 6, ... up to N) are
-#     complete PNGs, ending with their IEND chunk; nothing else and no temporary file is left;
-#   - view: "... before step 1, while fitting the frames' view; nothing written", and nothing is.
+#     N steps; trace -> FILE holds steps 0..N-1" (SIGTERM: "terminated"), with ", no frames
+#     (stopped before rendering)" (recording) or ", while rendering frame M; ... , M frames ->
+#     DIR" (frames);
+#   - the trace holds steps 0..N-1, every line whole; the M frames are complete PNGs, ending
+#     with their IEND chunk; nothing else and no temporary file is left;
+#   - twice: lamina dies by the second signal in the middle of the step the first one waits for
+#     (exit code 128 + the signal, as above), says nothing, and leaves nothing: no trace, since
+#     the run never finished it, and no temporary file, which the second signal removes.
 lamina=$1 folder=$2 signal=$3 mode=$4
 trace=$folder/trace.jsonl
 frames=$folder/frames
@@ -22,10 +27,51 @@ fail() {
 
 # True when the process has exited (gone, or a zombie the shell has not reaped yet).
 finished() { [ ! -e "/proc/$1" ] || [ "$(cut -d' ' -f3 "/proc/$1/stat")" = Z ]; }
+running() { ! finished "$1"; }
+
+# wait_while <seconds> <waited for> <command...>: runs the command every 0.01 s while it succeeds;
+# after <seconds>, kills lamina and fails: "<waited for> after <seconds> s".
+wait_while() {
+  seconds=$1 waited_for=$2 tries=0
+  shift 2
+  while "$@"; do
+    tries=$((tries + 1))
+    [ $tries -le $((seconds * 100)) ] || { kill -KILL $pid; fail "$waited_for after $seconds s"; }
+    sleep 0.01
+  done
+}
+
+# True until lamina has written something (view: made the trace's temporary); fails when lamina
+# has ended.
+not_written() {
+  finished $pid && fail "lamina ended before it was signalled"
+  ! { [ -e "$written" ] && { [ "$mode" = view ] || [ -s "$written" ]; }; }
+}
+
+# True while the file still has the size $2; fails when lamina has ended.
+same_size() {
+  finished $pid && fail "lamina ended before it was signalled"
+  [ "$(stat -c %s "$1")" = "$2" ]
+}
+
+# True while the signal is pending for the process, sent but not yet taken by a thread: bit
+# number - 1 of ShdPnd, the process's pending set in hexadecimal. Two signals sent while one is
+# pending are one signal.
+pending() {
+  set -- "$(sed -n 's/^ShdPnd:[[:space:]]*//p' "/proc/$1/status" 2>/dev/null)"
+  [ -n "$1" ] && [ $((0x${1#????????} >> (number - 1) & 1)) -eq 1 ]
+}
+
+# Fails when anything is left in the folder; else removes it.
+expect_empty_folder() {
+  left=$(ls -A "$folder")
+  [ -z "$left" ] || fail "left behind: $left"
+  rm -rf "$folder"
+}
 
 case $signal in
-  INT) code_expected=130 what=interrupted ;;
-  TERM) code_expected=143 what=terminated ;;
+  INT) code_expected=130 what=interrupted number=2 ;;
+  TERM) code_expected=143 what=terminated number=15 ;;
   *) fail "signal must be INT or TERM" ;;
 esac
 case $mode in
@@ -33,15 +79,19 @@ case $mode in
     scene=pyramid:10
     set -- run $scene --iterations 10000 --steps 100000 --trace "$trace"
     written=$trace.tmp ;;
-  frames)  # the view is fitted in ~0.3 s, then ~1000 frames/s
+  frames)  # 30000 steps simulated and recorded in ~0.3 s, then ~1000 frames/s
     scene=box-on-ground
-    set -- run $scene --steps 100000 --frames "$frames" --every $every --size 160x90 --trace "$trace"
+    set -- run $scene --steps 30000 --frames "$frames" --every $every --size 160x90 --trace "$trace"
     written=$frames/${scene}_0001.png ;;
-  view)  # fitting the view simulates 100000 steps of 820 boxes first: minutes
+  recording)  # 100000 steps of 820 boxes simulated before any frame is drawn: minutes
     scene=pyramid:40
     set -- run $scene --steps 100000 --frames "$frames" --trace "$trace"
     written=$trace.tmp ;;
-  *) fail "mode must be trace, frames or view" ;;
+  twice)  # 465 boxes at 10000 sweeps a step: ~0.5 s and ~480 kB a step
+    scene=pyramid:30
+    set -- run $scene --iterations 10000 --steps 100000 --trace "$trace"
+    written=$trace.tmp ;;
+  *) fail "mode must be trace, frames, recording or twice" ;;
 esac
 
 rm -rf "$folder" && mkdir -p "$folder" || fail "cannot make $folder"
@@ -50,56 +100,59 @@ rm -rf "$folder" && mkdir -p "$folder" || fail "cannot make $folder"
 env --default-signal=INT,TERM "$lamina" "$@" >"$folder/stdout" 2>"$folder/stderr" &
 pid=$!
 
-tries=0
-until [ -e "$written" ] && { [ "$mode" = view ] || [ -s "$written" ]; }; do
-  finished $pid && fail "lamina ended before it was signalled"
-  tries=$((tries + 1))
-  [ $tries -le 600 ] || { kill -KILL $pid; fail "$written not written after 60 s"; }
-  sleep 0.1
-done
+wait_while 60 "$written not written" not_written
+if [ "$mode" = twice ]; then
+  # The first signal just after lamina has written a step, so that the step it waits for has
+  # ~0.5 s to run; the second once the first is taken (not merged with it), a few ms later.
+  wait_while 30 "$written did not grow" same_size "$written" "$(stat -c %s "$written")"
+  kill -$signal $pid
+  wait_while 10 "the first SIG$signal not taken" pending $pid
+fi
 kill -$signal $pid
-tries=0
-until finished $pid; do
-  tries=$((tries + 1))
-  [ $tries -le 600 ] || { kill -KILL $pid; fail "still running 60 s after SIG$signal"; }
-  sleep 0.1
-done
+wait_while 60 "still running after SIG$signal" running $pid
 wait $pid
 code=$?
 
 [ $code -eq $code_expected ] || fail "exit code $code, expected $code_expected"
 [ -s "$folder/stdout" ] && fail "wrote to standard output: $(cat "$folder/stdout")"
+if [ "$mode" = twice ]; then
+  # No line: a run stopped by the first signal would say "interrupted after step N" and keep
+  # its trace, so an empty standard error shows the second signal killed it.
+  [ -s "$folder/stderr" ] && fail "stopped as for one signal, not killed by the second"
+  rm "$folder/stdout" "$folder/stderr"
+  expect_empty_folder
+  echo "SIG$signal twice during a step: exit code $code, no trace and no temporary file left"
+  exit 0
+fi
 [ "$(wc -l <"$folder/stderr")" -eq 1 ] || fail "standard error is not one line"
 rm "$folder/stdout"
 stderr=$(cat "$folder/stderr")
 rm "$folder/stderr"
 
-if [ "$mode" = view ]; then
-  expected="lamina: $scene: $what before step 1, while fitting the frames' view; nothing written"
-  [ "$stderr" = "$expected" ] || fail "stderr: $stderr
-expected: $expected"
-  left=$(ls -A "$folder")
-  [ -z "$left" ] || fail "left behind: $left"
-  rm -rf "$folder"
-  echo "SIG$signal while fitting the view: exit code $code, nothing written"
-  exit 0
-fi
-
-steps=$(echo "$stderr" | sed -n "s/^lamina: $scene: $what after step \([0-9][0-9]*\);.*/\1/p")
-[ -n "$steps" ] && [ "$steps" -ge 1 ] || fail "stderr does not name a step after the first: $stderr"
-expected="lamina: $scene: $what after step $steps; trace -> $trace holds steps 1..$steps"
-if [ "$mode" = frames ]; then
-  count=$((steps / every + 1))
-  expected="$expected, $count frames -> $frames"
-fi
+steps=$(echo "$stderr" | sed -n "s/^lamina: $scene: $what after \([0-9][0-9]*\) steps[;,].*/\1/p")
+[ -n "$steps" ] || fail "stderr does not say how many steps were taken: $stderr"
+[ "$mode" = recording ] || [ "$steps" -ge 1 ] || fail "stopped before its first step: $stderr"
+held="steps 0..$((steps - 1))"
+[ "$steps" -eq 0 ] && held="no steps"
+case $mode in
+  trace) expected="lamina: $scene: $what after $steps steps; trace -> $trace holds $held" ;;
+  recording)
+    expected="lamina: $scene: $what after $steps steps; trace -> $trace holds $held, no frames (stopped before rendering)" ;;
+  frames)
+    count=$(echo "$stderr" | sed -n "s/.* while rendering frame \([0-9][0-9]*\);.*/\1/p")
+    [ -n "$count" ] && [ "$count" -ge 1 ] || fail "stderr does not name a frame after the first: $stderr"
+    expected="lamina: $scene: $what after $steps steps, while rendering frame $count; trace -> $trace holds $held, $count frames -> $frames" ;;
+esac
 [ "$stderr" = "$expected" ] || fail "stderr: $stderr
 expected: $expected"
 
-# The trace: N lines, line k whole and of step k ('{"step":k,' ... '}'), and a newline at its end.
+# The trace: N lines, line k + 1 whole and of step k ('{"step":k,' ... '}'), and a newline at
+# its end (an empty trace when no step was taken).
 [ "$(wc -l <"$trace")" -eq "$steps" ] || fail "the trace has $(wc -l <"$trace") lines, not $steps"
-awk -v q='"' 'index($0, "{" q "step" q ":" NR ",") != 1 || !/}$/ { print "line " NR; exit 1 }' \
+awk -v q='"' 'index($0, "{" q "step" q ":" (NR - 1) ",") != 1 || !/}$/ { print "line " NR; exit 1 }' \
   "$trace" >/dev/null || fail "a trace line is not the whole line of its step"
-[ "$(tail -c 1 "$trace" | od -An -tx1 | tr -d ' ')" = 0a ] || fail "the trace's last line is cut short"
+[ "$steps" -eq 0 ] || [ "$(tail -c 1 "$trace" | od -An -tx1 | tr -d ' ')" = 0a ] ||
+  fail "the trace's last line is cut short"
 
 # Nothing else in the folder; the frames, complete.
 for file in "$folder"/* "$folder"/.[!.]*; do
@@ -118,4 +171,4 @@ if [ "$mode" = frames ]; then
   done
 fi
 rm -rf "$folder"
-echo "SIG$signal after step $steps: exit code $code, the trace and ${count:-no} frames complete"
+echo "SIG$signal after $steps steps: exit code $code, the trace and ${count:-no} frames complete"

@@ -14,11 +14,11 @@
 #include <vector>
 
 #include "../render_test_frame.h"
-#include "lamina/exit_codes.h"
-#include "lamina/run_command.h"
-#include "lamina/simulation.h"
+#include "app/cli/exit_codes.h"
+#include "app/cli/run_command.h"
+#include "app/cli/simulation.h"
 #include "scene/scene_world.h"
-#include "scene/trace_json.h"
+#include "trace/trace_json.h"
 
 using namespace lamina;
 using namespace lamina::cli;
@@ -101,14 +101,15 @@ std::vector<fs::path> files_in(const fs::path& folder) {
   return files;
 }
 
-// The step at which a run diverges, found by stepping its world alone.
+// The step k (counted from 0) at which a run diverges, found by stepping its world alone; −1
+// when none of the first 1000 does.
 long diverging_step(const Scene& scene) {
   World world = build_world(scene, world_settings(scene));
-  for (long step = 1; step <= 1000; ++step) {
+  for (long step = 0; step < 1000; ++step) {
     world.step();
     if (first_non_finite_body(world)) return step;
   }
-  return 0;
+  return -1;
 }
 
 }  // namespace
@@ -117,11 +118,11 @@ TEST_SUITE("LaminaRun") {
   TEST_CASE("a step that leaves a body non-finite stops the run, naming the body and the step") {
     const Scene scene = thrown_box();
     const long diverges = diverging_step(scene);
-    REQUIRE(diverges == 108);  // 1e308 m/s × 108/60 s > 1.8e308 m
+    REQUIRE(diverges == 107);  // 1e308 m/s × 108/60 s > 1.8e308 m: the 108th step, k = 107
     Simulation simulation(scene, world_settings(scene), "thrown.json");
     const Stop stop = step_until_stopped(simulation, 1000);
     CHECK(stop.exit_code == exit_diverged);
-    CHECK(stop.steps_taken == diverges - 1);  // the step that diverged is not taken
+    CHECK(stop.steps_taken == diverges);  // steps 0 .. k − 1: the step that diverged is not taken
     const std::string expected = "thrown.json: step " + std::to_string(diverges) +
                                  ": body \"box3\" is no longer finite (x = (inf, ";
     CHECK_MESSAGE(stop.message.rfind(expected, 0) == 0, stop.message);
@@ -138,7 +139,7 @@ TEST_SUITE("LaminaRun") {
     options.trace = scratch.path() / "trace.jsonl";
     options.frames = scratch.path() / "frames";
     options.every = 4;
-    options.size = {64, 36};
+    options.render.size = {64, 36};
     Stop stop;
     try {
       run_scene(scene, options);
@@ -146,18 +147,18 @@ TEST_SUITE("LaminaRun") {
       stop = {0, e.what(), e.exit_code()};
     }
     CHECK(stop.exit_code == exit_diverged);
-    const long kept = diverges - 1;
-    const long frames = kept / options.every + 1;  // steps 0, 4, 8, ... up to the last kept
-    const std::string tail = "; trace -> " + options.trace->string() + " holds steps 1.." +
-                             std::to_string(kept) + ", " + std::to_string(frames) + " frames -> " +
-                             options.frames->string();
+    const long kept = diverges;                    // steps 0 .. kept − 1
+    const long frames = (kept - 1) / options.every + 1;  // steps 0, 4, 8, ... up to the last kept
+    const std::string tail = "; trace -> " + options.trace->string() + " holds steps 0.." +
+                             std::to_string(kept - 1) + ", " + std::to_string(frames) +
+                             " frames -> " + options.frames->string();
     CHECK_MESSAGE(ends_with(stop.message, tail), stop.message);
 
     const std::vector<std::string> lines = lines_of(*options.trace);
     REQUIRE(static_cast<long>(lines.size()) == kept);
     for (long i = 0; i < kept; ++i) {
       const TraceStep step = parse_trace_line(lines[static_cast<std::size_t>(i)]);
-      CHECK(step.step == i + 1);
+      CHECK(step.step == i);
       CHECK(std::isfinite(step.bodies.at(0).position[1]));
     }
     std::vector<fs::path> pngs;
@@ -180,14 +181,14 @@ TEST_SUITE("LaminaRun") {
     CHECK(files_in(scratch.path()).size() == 2);
   }
 
-  TEST_CASE("a run that diverges in its first step keeps an empty trace and the frame of step 0") {
+  TEST_CASE("a run that diverges in its first step keeps an empty trace and no frame") {
     const ScratchFolder scratch("cli-diverge-first");
     RunOptions options;
     options.scene = "heavy.json";
     options.steps = 10000000;  // the most: fitting the view stops where the run diverges too
     options.trace = scratch.path() / "trace.jsonl";
     options.frames = scratch.path() / "frames";
-    options.size = {64, 36};
+    options.render.size = {64, 36};
     std::string message;
     try {
       run_scene(heavy_box(), options);
@@ -195,14 +196,33 @@ TEST_SUITE("LaminaRun") {
       message = e.what();
       CHECK(e.exit_code() == exit_diverged);
     }
-    const std::string start = "heavy.json: step 1: body \"box3\" is no longer finite (x = (";
+    const std::string start = "heavy.json: step 0: body \"box3\" is no longer finite (x = (";
+    // frame 0 would show what step 0 solved, and step 0 diverged
     const std::string end = "); trace -> " + options.trace->string() +
-                            " holds no steps, 1 frame -> " + options.frames->string();
+                            " holds no steps, 0 frames -> " + options.frames->string();
     CHECK_MESSAGE(message.rfind(start, 0) == 0, message);
     CHECK_MESSAGE(ends_with(message, end), message);
     CHECK_MESSAGE(message.find("nan") != std::string::npos, message);
     CHECK(fs::file_size(*options.trace) == 0);
-    CHECK(files_in(scratch.path()) ==
-          std::vector<fs::path>{*options.frames / "heavy_0000.png", *options.trace});  // sorted
+    CHECK(files_in(scratch.path()) == std::vector<fs::path>{*options.trace});
+  }
+
+  TEST_CASE("lamina run --frames simulates its run once: one World step per step of the run") {
+    // The frames' view is fitted to everything the run sweeps, so it is known only at the end:
+    // the run is recorded as it is simulated, then drawn (frame_recording.h), not simulated
+    // twice. Counted over every World of the process, so a second simulation would show.
+    const ScratchFolder scratch("cli-once");
+    RunOptions options;
+    options.scene = "box-on-ground-tilted";
+    options.steps = 50;
+    options.every = 5;
+    options.frames = scratch.path() / "frames";
+    options.trace = scratch.path() / "trace.jsonl";
+    options.render.size = {64, 36};
+    const long before = World::steps_in_process();
+    run_scene(options);
+    CHECK(World::steps_in_process() - before == 50);
+    CHECK(files_in(*options.frames).size() == 10);  // steps 0, 5, ..., 45
+    CHECK(lines_of(*options.trace).size() == 50);
   }
 }

@@ -6,10 +6,11 @@
 #include <utility>
 #include <vector>
 
+#include "app/harness/plot.h"
+#include "app/views/motion/body_view.h"
+#include "app/views/constraints/constraint_view.h"
 #include "ch3/constrained_system.h"
 #include "constraints/revolute_joint.h"
-#include "harness/body_view.h"
-#include "harness/plot.h"
 
 namespace lamina::ch3 {
 namespace {
@@ -20,7 +21,7 @@ constexpr double link_density = 20.0;   // kg/m²: 1 kg per link
 const Vec3 chain_pivot(0.0, 0.0, 0.0);  // the world pin, in m
 constexpr double chain_release = 1.2;   // the straight chain's angle from hanging, in rad
 const Vec3 chain_direction(std::sin(chain_release), -std::cos(chain_release), 0.0);  // unit
-constexpr int comparison_step = 30;    // the step pgs_residual.png shows
+constexpr int comparison_step = 30;    // the step pgs_residual.png shows (from t = 0.5 s)
 constexpr int comparison_sweeps = 30;  // sweeps plotted
 
 using Pins = std::vector<std::pair<Anchor, Anchor>>;  // each joint's two anchors, in order
@@ -78,7 +79,7 @@ Comparison compare_warm_and_cold(const System& s, int sweeps) {
     WarmStart start = s.warm_start;
     ConstrainedStepSettings settings = s.settings;
     settings.warm_start = warm;
-    settings.pgs.iterations = sweeps;
+    settings.step.iterations = sweeps;
     constrained_step(bodies, s.constraints, settings, start, warm ? &c.warm : &c.cold);
   }
   return c;
@@ -86,15 +87,17 @@ Comparison compare_warm_and_cold(const System& s, int sweeps) {
 
 class Chain : public tutorial::Scene {
  public:
-  Chain() : s_(make_chain()), pins_(chain_pins(level_links())), trail_{tip()} {}
+  Chain() : s_(make_chain()), pins_(chain_pins(level_links())) { step(); }
 
   tutorial::SceneInfo info() const override {
     return {"chain", 1.0 / 60.0, 91, 2, {Vec2(-3.3, -2.3), Vec2(3.3, 1.1)}};
   }
 
+  // Takes the next step, and the same step from λ = 0 for the panel; the trail gains the free
+  // end's position at its t.
   void step() override {
     cold_residual_ =
-        compare_warm_and_cold(s_, s_.settings.pgs.iterations).cold.solution.residuals.back();
+        compare_warm_and_cold(s_, s_.settings.step.iterations).cold.solution.residuals.back();
     s_.step(joint_errors(s_.bodies, pins_));
     trail_.push_back(tip());
   }
@@ -106,13 +109,10 @@ class Chain : public tutorial::Scene {
     const render::Colour fills[] = {render::palette::sky_blue, orange, reddish_purple,
                                     bluish_green};
     for (int i = 0; i < links; ++i) {
-      frame.bodies.push_back(tutorial::box_view(s_.bodies[static_cast<std::size_t>(i)], link_half,
-                                                tint(fills[i], 0.45)));
+      frame.bodies.push_back(view::box_view(s_.at_t[static_cast<std::size_t>(i)], link_half,
+                                            tint(fills[i], 0.45)));
     }
-    for (const auto& [a, b] : pins_) {
-      frame.joints.push_back(
-          {planar(anchor_position(s_.bodies, a)), planar(anchor_position(s_.bodies, b))});
-    }
+    for (const auto& joint : s_.constraints) frame.joints.push_back(*view::joint_view(s_.at_t, *joint));
     frame.panels.push_back(panel());
     frame.legend = {{render::LegendEntry::Sample::line, tint(bluish_green, 0.6),
                      "path of the chain's free end"}};
@@ -131,11 +131,11 @@ class Chain : public tutorial::Scene {
     return explain_system(s_, "Chain", names);
   }
 
-  // pgs_residual.png: a fresh chain to comparison_step, then that step from both guesses.
+  // pgs_residual.png: a fresh chain up to t = comparison_step Δt, then that step from both guesses.
   void write_data(const std::filesystem::path& folder) const override {
     System s = make_chain();
     const Pins pins = chain_pins(level_links());
-    for (int i = 1; i < comparison_step; ++i) s.step(joint_errors(s.bodies, pins));
+    for (int i = 0; i < comparison_step; ++i) s.step(joint_errors(s.bodies, pins));
     const Comparison c = compare_warm_and_cold(s, comparison_sweeps);
     std::vector<std::vector<double>> rows;
     for (int k = 0; k < comparison_sweeps; ++k) {
@@ -155,15 +155,15 @@ class Chain : public tutorial::Scene {
   }
 
  private:
-  // The free end of the last link.
+  // The free end of the last link at t.
   Vec2 tip() const {
-    const RigidBody& last = s_.bodies.back();
+    const RigidBody& last = s_.at_t.back();
     return planar(last.x + last.rotation * Vec3(link_half.x(), 0.0, 0.0));
   }
 
   render::Panel panel() const {
     double worst_gap = 0.0;
-    const std::vector<double> C = joint_errors(s_.bodies, pins_);
+    const std::vector<double> C = joint_errors(s_.at_t, pins_);
     for (std::size_t k = 0; k < C.size(); k += 2)
       worst_gap = std::max(worst_gap, std::hypot(C[k], C[k + 1]));
     render::Panel panel;
@@ -171,19 +171,17 @@ class Chain : public tutorial::Scene {
     panel.title = "PGS on the chain (4 joints, 8 rows)";
     panel.lines = {"J: 8 × 24 (3-8)   J B: 8 × 8 (3-16)",
                    "widest joint gap |p_b − p_a| = " + fixed(worst_gap, 4) + " m"};
-    if (s_.stepped) {
-      const int sweeps = s_.report.solution.iterations;
-      panel.lines.push_back("‖W‖ after " + std::to_string(sweeps) + " sweeps (3-23, 3-24):");
-      panel.lines.push_back("  from last step's λ  " + scientific(s_.last_residual()) + " m/s²");
-      panel.lines.push_back("  from λ = 0          " + scientific(cold_residual_) + " m/s²");
-    }
+    const int sweeps = s_.report.solution.iterations;
+    panel.lines.push_back("‖W‖ after " + std::to_string(sweeps) + " sweeps (3-23, 3-24):");
+    panel.lines.push_back("  from last step's λ  " + scientific(s_.last_residual()) + " m/s²");
+    panel.lines.push_back("  from λ = 0          " + scientific(cold_residual_) + " m/s²");
     return panel;
   }
 
   System s_;
   Pins pins_;                   // each joint's anchors, the world pin first
-  std::vector<Vec2> trail_;     // the free end's positions, one per step, in m
-  double cold_residual_ = 0.0;  // ‖W‖ of the last step had PGS started from λ = 0, in m/s²
+  std::vector<Vec2> trail_;     // the free end's positions, one per step up to t, in m
+  double cold_residual_ = 0.0;  // ‖W‖ of step k had PGS started from λ = 0, in m/s²
 };
 
 }  // namespace

@@ -3,7 +3,7 @@
 // pgs_residual.png plots ‖W‖ per sweep for both at one step.
 #pragma once
 
-#include "harness/tutorial.h"
+#include "app/harness/tutorial.h"
 
 namespace lamina::ch3 {
 

@@ -1,15 +1,17 @@
-// Chapter 3's tutorial: a system of bodies and constraints stepped by constrained_step, what
-// its last step solved, and --explain for it in the text's terms (every row's Jmap, Jsp, C, ζ,
-// η, d, bounds, λ_exp, λ, W, the residual per sweep and, when small, the dense J, M⁻¹, J M⁻¹ Jᵀ).
+// Chapter 3's tutorial: a system of bodies and constraints stepped by constrained_step, shown
+// one step at a time as the other chapters show theirs: step k goes from t = k Δt to t + Δt, a
+// frame shows the bodies at t with what step k solved from them, and --explain prints it (every
+// row's Jmap, Jsp, C, ζ, η, d, bounds, λ_exp, λ, W, the residual per sweep and, when small, the
+// dense J, M⁻¹, J M⁻¹ Jᵀ).
 #pragma once
 
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "app/harness/format.h"
+#include "app/harness/tutorial.h"
 #include "constraints/constrained_step.h"
-#include "harness/format.h"
-#include "harness/tutorial.h"
 
 namespace lamina::ch3 {
 
@@ -31,30 +33,26 @@ inline Vec3 spatial(const Vec2& v) { return Vec3(v.x(), v.y(), 0.0); }
 
 // Bodies, their constraints and what the last constrained_step solved.
 struct System {
-  std::vector<RigidBody> bodies;
+  std::vector<RigidBody> bodies;  // now: at t + Δt once step k is taken
   ConstraintList constraints;
   ConstrainedStepSettings settings;
   WarmStart warm_start;
-  StepReport report;      // the last step's; empty before the first
-  std::vector<double> C;  // each row's position error at the start of the last step, in m
-  bool stepped = false;
+  std::vector<RigidBody> at_t;    // the bodies at t, where step k started (what a frame shows)
+  StepReport report;              // what step k solved
+  std::vector<double> C;          // each row's position error at t, in m (the report has ζ, not C)
+  long step_index = -1;           // k, −1 before the first step
 
-  // One step; `errors` are the rows' C now, kept for --explain (the report has ζ, not C).
-  void step(std::vector<double> errors) {
-    C = std::move(errors);
-    constrained_step(bodies, constraints, settings, warm_start, &report);
-    stepped = true;
-  }
-  // F_c = Jᵀ λ on body b from the last step's rows (eq. 3-11), [F τ].
-  Vec6 constraint_force(int b) const;
-  // ‖W‖ after the last sweep of the last step (eq. 3-23, 3-24); 0 before the first step.
+  // Takes step k + 1; `errors` are the rows' C now, kept for --explain.
+  void step(std::vector<double> errors);
+  // ‖W‖ after the last sweep of step k (eq. 3-23, 3-24).
   double last_residual() const;
 };
 
 // A fixed block just above a world pin, the ceiling it hangs from.
 render::Body mount(const Vec3& pivot);
 
-// The bodies after the step, the solver's sweeps and each row, named by `row_names`.
+// Step k of the system: the bodies at t, each row named by `row_names` with its C, the solver's
+// sweeps, the dense system when small, and the bodies at t + Δt with their F_c = Jᵀ λ.
 tutorial::Explanation explain_system(const System& s, const std::string& title,
                                      const std::vector<std::string>& row_names);
 

@@ -4,7 +4,7 @@
 
 #include "ch3/constrained_system.h"
 #include "constraints/incline_constraint.h"
-#include "harness/body_view.h"
+#include "app/views/motion/body_view.h"
 
 namespace lamina::ch3 {
 namespace {
@@ -25,19 +25,17 @@ class Incline : public tutorial::Scene {
     const Vec3 start = p_ + spatial(1.0 * downhill);
     s_.bodies.push_back(box_body(box_density, box_half.x(), box_half.y(), start, -incline_angle));
     s_.constraints.push_back(std::make_unique<InclineConstraint>(0, p_, spatial(incline_normal)));
+    step();
   }
 
   tutorial::SceneInfo info() const override {
     return {"incline", 1.0 / 60.0, 46, 2, {Vec2(-0.6, -0.8), Vec2(8.6, 4.4)}};
   }
 
-  void step() override {
-    previous_speed_ = speed();
-    s_.step({error()});
-  }
+  void step() override { s_.step({error(s_.bodies[0])}); }
 
   void draw(render::Frame& frame) const override {
-    const RigidBody& box = s_.bodies[0];
+    const RigidBody& box = s_.at_t[0];
     frame.caption = "Ch 3 · Fig 3-1: a box held on an incline, (x − p)·N = 0 (eq. 3-1..3-4)";
     frame.force_scale = incline_force_scale;
     frame.velocity_scale = 0.15;
@@ -52,17 +50,15 @@ class Incline : public tutorial::Scene {
     frame.arrows.push_back({p, p + 0.6 * incline_normal, ink, "N", std::nullopt});
     frame.labels.push_back({p - Vec2(0.12, 0.05), "p", ink, render::Label::Align::right});
     frame.bodies.push_back(
-        tutorial::box_view(box, box_half, tint(render::palette::sky_blue, 0.35)));
+        view::box_view(box, box_half, tint(render::palette::sky_blue, 0.35)));
     const Vec2 x = planar(box.x);
     const Vec2 weight = planar(box.mass * gravity),
                support = planar(lambda() * spatial(incline_normal));
     const double k = incline_force_scale;
     frame.arrows.push_back({x, x + k * weight, vermillion, "m g", render::Overlay::forces});
-    if (s_.stepped) {
-      frame.arrows.push_back({x, x + k * support, blue, "λN", render::Overlay::forces});
-      frame.arrows.push_back(
-          {x, x + k * (weight + support), bluish_green, "", render::Overlay::forces});
-    }
+    frame.arrows.push_back({x, x + k * support, blue, "λN", render::Overlay::forces});
+    frame.arrows.push_back(
+        {x, x + k * (weight + support), bluish_green, "", render::Overlay::forces});
     frame.panels.push_back(panel());
     frame.legend = {
         {render::LegendEntry::Sample::arrow, vermillion, "weight m g"},
@@ -77,40 +73,35 @@ class Incline : public tutorial::Scene {
   }
 
  private:
-  double lambda() const { return s_.stepped ? s_.report.solution.lambda[0] : 0.0; }
-  double error() const { return (s_.bodies[0].x - p_).dot(spatial(incline_normal)); }
-  double speed() const { return planar(s_.bodies[0].v).dot(downhill); }
+  double lambda() const { return s_.report.solution.lambda[0]; }
+  double error(const RigidBody& box) const { return (box.x - p_).dot(spatial(incline_normal)); }
+  static double speed(const RigidBody& box) { return planar(box.v).dot(downhill); }
 
   render::Panel panel() const {
-    const RigidBody& box = s_.bodies[0];
-    const double g = gravity.norm(), dt = s_.settings.dt;
+    const RigidBody& box = s_.at_t[0];
+    const double g = gravity.norm(), dt = s_.settings.step.dt;
     render::Panel panel;
     panel.corner = render::Corner::top_right;
     panel.title = "The incline in numbers";
     panel.lines = {"m = " + fixed(box.mass, 1) + " kg   θ = 30°   N = (" +
                        fixed(incline_normal.x()) + ", " + fixed(incline_normal.y()) + ")",
-                   "C = (x − p)·N     = " + scientific(error()) + " m  (3-1)"};
-    if (!s_.stepped) {
-      panel.lines.push_back("released at rest; step 1 solves λ");
-      return panel;
-    }
+                   "C = (x − p)·N     = " + scientific(error(box)) + " m  (3-1)"};
     const StepReport& r = s_.report;
     panel.lines.insert(
         panel.lines.end(),
-        {"J = [Nᵀ 0ᵀ]   J M⁻¹ Jᵀ = 1/m = " + fixed(r.mlcp.d[0]) + " 1/kg",
-         "ζ = −βC/Δt       = " + fixed(r.mlcp.rows[0].zeta) + " m/s  (3-14)",
-         "η = ζ/Δt − J(V/Δt + M⁻¹F) = " + fixed(r.mlcp.eta[0]) + " m/s²  (3-16)",
+        {"J = [Nᵀ 0ᵀ]   J M⁻¹ Jᵀ = 1/m = " + fixed(r.mlcp.d(0)) + " 1/kg",
+         "ζ = −βC/Δt       = " + fixed(r.mlcp.zeta(0)) + " m/s  (3-14)",
+         "η = ζ/Δt − J(V/Δt + M⁻¹F) = " + fixed(r.mlcp.eta(0)) + " m/s²  (3-16)",
          "λ = η / (J M⁻¹ Jᵀ) = " + fixed(lambda()) + " N  (3-3, 3-4)",
          "m g cos θ        = " + fixed(box.mass * g * std::cos(incline_angle)) + " N  (theory)",
-         "a along slope    = " + fixed((speed() - previous_speed_) / dt) + " m/s²",
+         "a along slope    = " + fixed((speed(s_.bodies[0]) - speed(box)) / dt) + " m/s²",
          "g sin θ          = " + fixed(g * std::sin(incline_angle)) + " m/s²  (theory)",
          "arrows: " + fixed(incline_force_scale, 2) + " m per N"});
     return panel;
   }
 
   System s_;
-  Vec3 p_;                     // p, a point of the line the centre is held on, in m
-  double previous_speed_ = 0;  // v·(down the slope) before the last step, in m/s
+  Vec3 p_;  // p, a point of the line the centre is held on, in m
 };
 
 }  // namespace

@@ -2,7 +2,7 @@
 // force λN cancels the normal part of m g, and the box slides with g sin θ.
 #pragma once
 
-#include "harness/tutorial.h"
+#include "app/harness/tutorial.h"
 
 namespace lamina::ch3 {
 

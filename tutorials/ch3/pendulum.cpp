@@ -5,9 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "app/harness/plot.h"
+#include "app/views/constraints/constraint_view.h"
 #include "ch3/constrained_system.h"
 #include "constraints/distance_constraint.h"
-#include "harness/plot.h"
 
 namespace lamina::ch3 {
 namespace {
@@ -34,11 +35,17 @@ struct Pendulum {
     s.bodies.push_back(disc_body(density, bob_radius, bob));
     s.constraints.push_back(std::make_unique<DistanceConstraint>(
         Anchor{world, pivot}, Anchor{0, Vec3::Zero()}, rod_length));
-    s.settings.dt = pendulum_dt;
-    s.settings.beta = beta;
-    trail.push_back(planar(bob));
+    s.settings.step.dt = pendulum_dt;
+    s.settings.step.beta = beta;
+    advance();
   }
-  double error() const { return (s.bodies[0].x - pivot).norm() - rod_length; }  // C = |d| − L
+  // C = |d| − L of the bob at a state
+  double error(const RigidBody& bob) const { return (bob.x - pivot).norm() - rod_length; }
+  // Takes the next step; the trail gains the bob's position at its t.
+  void advance() {
+    s.step({error(s.bodies[0])});
+    trail.push_back(planar(s.at_t[0].x));
+  }
 };
 
 class PendulumPair : public tutorial::Scene {
@@ -54,11 +61,7 @@ class PendulumPair : public tutorial::Scene {
   }
 
   void step() override {
-    for (Pendulum& run : runs_) {
-      run.s.step({run.error()});
-      run.trail.push_back(planar(run.s.bodies[0].x));
-    }
-    ++step_;
+    for (Pendulum& run : runs_) run.advance();
     record();
   }
 
@@ -67,11 +70,11 @@ class PendulumPair : public tutorial::Scene {
         "Ch 3 · A pendulum on a rod: C = |p − pivot| − L drifts unless β > 0 (eq. 3-14)";
     frame.force_scale = pendulum_force_scale;
     for (const Pendulum& run : runs_) {
-      const RigidBody& bob = run.s.bodies[0];
+      const RigidBody& bob = run.s.at_t[0];
       frame.paths.push_back({circle_arc(run.pivot), grey, true});
       frame.paths.push_back({run.trail, tint(run.colour, 0.6), false});
       frame.bodies.push_back(mount(run.pivot));
-      frame.joints.push_back({planar(run.pivot), planar(bob.x)});
+      frame.joints.push_back(*view::joint_view(run.s.at_t, *run.s.constraints[0]));
       render::Body view;
       view.shape = render::Body::Shape::circle;
       view.centre = planar(bob.x);
@@ -80,11 +83,9 @@ class PendulumPair : public tutorial::Scene {
       view.fill = tint(run.colour, 0.45);
       view.velocity = planar(bob.v);
       frame.bodies.push_back(view);
-      if (run.s.stepped) {
-        const Vec2 force = run.s.constraint_force(0).head<2>();
-        frame.arrows.push_back({planar(bob.x), planar(bob.x) + pendulum_force_scale * force, blue,
-                                "Jᵀλ", render::Overlay::forces});
-      }
+      const Vec2 force = run.s.report.constraint_wrench(0).head<2>();
+      frame.arrows.push_back({planar(bob.x), planar(bob.x) + pendulum_force_scale * force, blue,
+                              "Jᵀλ", render::Overlay::forces});
       frame.panels.push_back(panel(run));
     }
     frame.legend = {
@@ -116,8 +117,8 @@ class PendulumPair : public tutorial::Scene {
 
  private:
   void record() {
-    drift_rows_.push_back(
-        {step_ * pendulum_dt, std::abs(runs_[0].error()), std::abs(runs_[1].error())});
+    const auto drift = [](const Pendulum& run) { return std::abs(run.error(run.s.at_t[0])); };
+    drift_rows_.push_back({runs_[0].s.step_index * pendulum_dt, drift(runs_[0]), drift(runs_[1])});
   }
 
   static std::vector<Vec2> circle_arc(const Vec3& pivot) {
@@ -135,17 +136,14 @@ class PendulumPair : public tutorial::Scene {
     panel.title = std::string("Pendulum, ") + run.title;
     panel.title_colour = run.colour;
     panel.lines = {"L = 1.5 m   m = 1 kg   θ0 = 1 rad",
-                   "C = |p − pivot| − L = " + fixed(run.error(), 4) + " m"};
-    if (run.s.stepped) {
-      const StepReport& r = run.s.report;
-      panel.lines.push_back("ζ = −βC/Δt = " + fixed(r.mlcp.rows[0].zeta, 4) + " m/s  (3-14)");
-      panel.lines.push_back("λ = " + fixed(r.solution.lambda[0], 2) + " N (rod tension −λ)");
-    }
+                   "C = |p − pivot| − L = " + fixed(run.error(run.s.at_t[0]), 4) + " m"};
+    const StepReport& r = run.s.report;
+    panel.lines.push_back("ζ = −βC/Δt = " + fixed(r.mlcp.zeta(0), 4) + " m/s  (3-14)");
+    panel.lines.push_back("λ = " + fixed(r.solution.lambda[0], 2) + " N (rod tension −λ)");
     return panel;
   }
 
   std::array<Pendulum, 2> runs_;
-  long step_ = 0;
   std::vector<std::vector<double>> drift_rows_;  // t, |C| with β = 0, |C| with β = 0.2
 };
 

@@ -2,7 +2,7 @@
 // grows; β = 0.2 (eq. 3-14) pulls it back. pendulum_drift.png plots |C| against t.
 #pragma once
 
-#include "harness/tutorial.h"
+#include "app/harness/tutorial.h"
 
 namespace lamina::ch3 {
 

@@ -9,10 +9,10 @@
 #include <exception>
 #include <iostream>
 
-#include "lamina/command_line.h"
-#include "lamina/exit_codes.h"
-#include "lamina/scene_commands.h"
-#include "lamina/signals.h"
+#include "app/cli/command_line.h"
+#include "app/cli/exit_codes.h"
+#include "app/cli/scene_commands.h"
+#include "app/cli/signals.h"
 #include "output/output_file.h"
 #include "scene/scene_json.h"
 

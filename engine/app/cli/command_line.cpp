@@ -1,0 +1,108 @@
+#include "app/cli/command_line.h"
+
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/harness/render_request.h"
+#include "app/cli/exit_codes.h"
+#include "scene/scene_limits.h"
+
+namespace lamina::cli {
+namespace {
+
+// The ranges of a scene file's dt, iterations, beta and steps (scene_limits.h), as CLI11 checks.
+template <typename T>
+CLI::Range range_of(scene_limits::Range<T> range) {
+  return CLI::Range(range.low, range.high);
+}
+
+const char* const exit_codes =
+    "Exit codes: 0 ok; 2 bad input (a scene file, option value or output path: one line on "
+    "standard error names it, and nothing is written); 1 internal failure (a bug, or no OpenGL "
+    "for --frames); 3 the run diverged (a body's state is no longer finite: one line names the "
+    "body and the step, the trace and frames hold every step before); 130 interrupted by Ctrl-C "
+    "(143 by SIGTERM: the trace and frames hold every step taken).\n"
+    "Documentation: docs/lamina-command.md, docs/scene-format.md.";
+
+const char* const scene_help =
+    "a scene file (JSON, see docs/scene-format.md), or the name of a built-in scene "
+    "(`lamina scenes`; pyramid:N has N boxes in its base)";
+
+
+// Adds an option whose value goes into an std::optional when it is given.
+template <typename T>
+CLI::Option* add_optional(CLI::App& app, const std::string& name, std::optional<T>& target,
+                          const std::string& help) {
+  return app.add_option_function<T>(name, [&target](const T& value) { target = value; }, help);
+}
+
+void add_run_options(CLI::App& run, RunOptions& o, std::string& explain_format) {
+  run.add_option("SCENE", o.scene, scene_help)->required();
+  add_optional(run, "--steps", o.steps, "time steps to take (default: the scene's `steps`)")
+      ->type_name("N")->check(range_of(scene_limits::steps));
+  add_optional(run, "--dt", o.dt, "the time step Δt in s (default: the scene's `dt`)")
+      ->type_name("S")->check(range_of(scene_limits::dt));
+  add_optional(run, "--iterations", o.iterations, "PGS sweeps per step (default: the scene's)")
+      ->type_name("K")->check(range_of(scene_limits::iterations));
+  add_optional(run, "--beta", o.beta, "β of the position bias, eq. 3-14 and 4-4 (default: the scene's)")
+      ->type_name("B")->check(range_of(scene_limits::beta));
+  run.add_flag("--no-cache", o.no_cache, "solve without the contact cache (no warm start, Fig 4-2..4-5)");
+  auto* trace = add_optional(run, "--trace", o.trace,
+                             "write every step to FILE: JSON Lines, or CSV when FILE ends in .csv "
+                             "(contacts then go to FILE.contacts.csv)")->type_name("FILE");
+  auto* frames = add_optional(run, "--frames", o.frames,
+                              "render PNG frames into DIR: <scene>_0000.png shows step 0 (the state "
+                              "at t = 0 and what step 0 solved), then one every --every steps")
+                     ->type_name("DIR");
+  run.add_option("--every", o.every, "steps between frames")->type_name("K")->capture_default_str()
+      ->check(CLI::PositiveNumber)->needs(frames);
+  for (CLI::Option* option : tutorial::add_render_options(run, o.render)) option->needs(frames);
+  auto* explain = add_optional(run, "--explain", o.explain, "print what the engine computed in "
+                               "step STEP (from t = STEP Δt to t + Δt), with equation numbers, "
+                               "and stop; writes no file")
+                      ->type_name("STEP")->check(range_of(scene_limits::steps))
+                      ->excludes(trace)->excludes(frames);
+  run.add_option("--explain-format", explain_format, "text or json")
+      ->type_name("FORMAT")->capture_default_str()->check(CLI::IsMember({"text", "json"}))->needs(explain);
+}
+
+// CLI11's message, or which subcommand was expected when none was given.
+std::string parse_error_message(const CLI::App& app, const CLI::ParseError& e) {
+  if (!app.get_subcommands().empty()) return e.what();
+  const std::vector<std::string> rest = app.remaining();
+  return (rest.empty() ? std::string("expected") : "'" + rest.front() + "' is not") +
+         " a subcommand: run, scenes, show or check (see lamina --help)";
+}
+
+}  // namespace
+
+ParsedCommand parse_command_line(int argc, char** argv) {
+  CLI::App app("lamina: simulate Lamina scenes, write their traces and frames", "lamina");
+  app.set_help_all_flag("--help-all", "print the help of every subcommand");
+  app.footer(exit_codes);
+  app.require_subcommand(1);
+  Command c;
+  std::string explain_format = "text";
+  CLI::App* run = app.add_subcommand("run", "simulate a scene; write its trace, frames, or one step explained");
+  add_run_options(*run, c.run, explain_format);
+  CLI::App* scenes = app.add_subcommand("scenes", "list the built-in scenes with a line on each");
+  CLI::App* show = app.add_subcommand("show", "print a scene as a JSON scene file, to copy and edit");
+  show->add_option("SCENE", c.scene, scene_help)->required();
+  CLI::App* check = app.add_subcommand("check", "validate a scene file; simulate nothing");
+  check->add_option("SCENE", c.scene, scene_help)->required();
+  for (CLI::App* sub : {run, scenes, show, check}) sub->footer(exit_codes);
+  try {
+    app.parse(argc, argv);
+    c.run.explain_json = explain_format == "json";
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return {std::nullopt, app.exit(e)};
+    std::cerr << "lamina: " << parse_error_message(app, e) << '\n';
+    return {std::nullopt, exit_bad_input};
+  }
+  c.kind = *run ? Command::Kind::run : *scenes ? Command::Kind::scenes
+         : *show ? Command::Kind::show : Command::Kind::check;
+  return {c, exit_ok};
+}
+
+}  // namespace lamina::cli

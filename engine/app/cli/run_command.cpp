@@ -1,0 +1,191 @@
+#include "app/cli/run_command.h"
+
+#include <cctype>
+#include <iostream>
+#include <memory>
+
+#include "app/cli/exit_codes.h"
+#include "app/cli/frame_recording.h"
+#include "app/cli/scene_source.h"
+#include "app/cli/signals.h"
+#include "app/cli/simulation.h"
+#include "app/views/contact/world_explanation.h"
+#include "scene/scene_world.h"
+
+namespace lamina::cli {
+namespace {
+
+WorldSettings run_settings(const RunOptions& o, Scene& scene) {
+  if (o.dt) scene.dt = *o.dt;
+  if (o.iterations) scene.iterations = *o.iterations;
+  if (o.beta) scene.beta = *o.beta;
+  WorldSettings settings = world_settings(scene);
+  settings.cache.enabled = !o.no_cache;
+  return settings;
+}
+
+// Steps 0 .. K − 1, then step K with its report, printed as the tutorials print theirs.
+void explain_step(Simulation& simulation, long k, bool json) {
+  while (simulation.steps_taken() < k) simulation.step();
+  WorldReport report;
+  simulation.step(&report);
+  const tutorial::StepContext context{"lamina", simulation.scene().name, k, report.time,
+                                      simulation.world().settings().step.dt};
+  const tutorial::Explanation explanation =
+      view::explain_world_step(simulation.world(), report, simulation.body_names());
+  if (json) {
+    std::cout << tutorial::to_json(context, explanation).dump(2) << '\n';
+  } else {
+    std::cout << tutorial::to_text(context, explanation);
+  }
+}
+
+// The file name prefix of the scene's frames: anything but letters, digits, '.', '_' and '-'
+// becomes '-' ("pyramid:5" → "pyramid-5"); an empty name is "scene".
+std::string file_prefix(const std::string& name) {
+  std::string prefix = name;
+  for (char& c : prefix) {
+    const bool plain = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
+    if (!plain) c = '-';
+  }
+  return prefix.empty() ? "scene" : prefix;
+}
+
+// The steps of the run, each recorded in the trace and, every `every` steps, as a frame.
+void simulate(Simulation& simulation, long steps, FrameRecording* recording) {
+  while (simulation.steps_taken() < steps) {
+    const long k = simulation.steps_taken();
+    if (recording != nullptr && recording->draws(k)) {
+      const std::vector<RigidBody> at_t = simulation.world().bodies();
+      simulation.step();
+      recording->record(k, simulation.world(), at_t);
+    } else {
+      simulation.step();
+    }
+    if (recording != nullptr) recording->sweep(simulation.world());
+  }
+}
+
+// The renderer of --frames: its folder made and an OpenGL context open before the first step,
+// so that a folder that cannot be written, or no OpenGL, stops the run before it writes anything.
+std::unique_ptr<tutorial::FrameRenderer> frame_renderer(const RunOptions& o) {
+  if (!o.frames) return nullptr;
+  tutorial::RenderRequest request = o.render;
+  request.out = *o.frames;
+  return std::make_unique<tutorial::FrameRenderer>(request);
+}
+
+// Renders the recorded frames, counting in `rendered` those written. SIGINT or SIGTERM stops it
+// between two frames (RunStopped), the frames before complete.
+void render_recording(const Simulation& simulation, const FrameRecording& recording,
+                      tutorial::FrameRenderer& renderer, ProgressBar& progress, int& rendered) {
+  std::size_t next = 0;
+  rendered = 0;
+  try {
+    renderer.render(file_prefix(simulation.scene().name), recording.view(simulation.world()),
+                    simulation.world().settings().step.dt, [&](render::Frame& frame, long& step) {
+                      if (next == recording.frames().size()) return false;
+                      if (const int signal = stop_signal()) {
+                        throw stopped_by(signal, simulation.origin(),
+                                         "after " + std::to_string(simulation.steps_taken()) +
+                                             " steps, while rendering frame " + std::to_string(next));
+                      }
+                      frame = recording.frames()[next].frame;
+                      step = recording.frames()[next++].step;
+                      progress.advance();
+                      return true;
+                    });
+  } catch (const RunStopped&) {
+    renderer.finish();  // the frames queued before the stop, complete
+    rendered = static_cast<int>(next);
+    throw;
+  }
+  renderer.finish();
+  rendered = static_cast<int>(next);
+}
+
+// "t.csv, t.contacts.csv"
+std::string listed(const std::vector<std::filesystem::path>& paths) {
+  std::string list;
+  for (const std::filesystem::path& path : paths) list += (list.empty() ? "" : ", ") + path.string();
+  return list;
+}
+
+// "steps 0..411", "no steps"
+std::string step_span(long taken) {
+  return taken > 0 ? "steps 0.." + std::to_string(taken - 1) : "no steps";
+}
+
+void print_summary(const Simulation& simulation, const std::optional<TraceWriter>& trace,
+                   const RunOptions& o, int frames) {
+  std::cout << simulation.scene().name << ": " << simulation.steps_taken() << " steps, t = "
+            << simulation.world().time() << " s";
+  if (trace) std::cout << ", trace -> " << listed(trace->paths());
+  if (o.frames) std::cout << ", " << frames << (frames == 1 ? " frame -> " : " frames -> ") << o.frames->string();
+  std::cout << '\n';
+}
+
+// What a run that stopped keeps, complete: "; trace -> t.jsonl holds steps 0..411, 103 frames
+// -> out".
+std::string kept_outputs(const Simulation& simulation, const RunOptions& o,
+                         const std::optional<TraceWriter>& trace, const std::string& frames) {
+  std::string kept;
+  if (trace) kept += "; trace -> " + listed(trace->paths()) + " holds " + step_span(simulation.steps_taken());
+  if (o.frames) kept += (trace ? ", " : "; ") + frames;
+  return kept;
+}
+
+std::string frames_kept(int count, const RunOptions& o) {
+  return std::to_string(count) + (count == 1 ? " frame -> " : " frames -> ") + o.frames->string();
+}
+
+}  // namespace
+
+void run_scene(const RunOptions& o) { run_scene(load_scene(o.scene), o); }
+
+void run_scene(Scene scene, const RunOptions& o) {
+  const WorldSettings settings = run_settings(o, scene);
+  const long steps = o.steps.value_or(scene.steps);
+  Simulation simulation(std::move(scene), settings, o.scene);
+  note_stop_signals();
+  if (o.explain) return explain_step(simulation, *o.explain, o.explain_json);
+  const std::unique_ptr<tutorial::FrameRenderer> renderer = frame_renderer(o);
+  std::optional<TraceWriter> trace;
+  if (o.trace) simulation.record_to(trace.emplace(*o.trace));
+  std::optional<FrameRecording> recording;
+  const std::string& description = simulation.scene().description;
+  const std::string& name = simulation.scene().name;
+  if (o.frames) recording.emplace(simulation.world(), o.every, description.empty() ? name : name + " · " + description);
+  const long frame_count = o.frames ? (steps + o.every - 1) / o.every : 0;
+  ProgressBar progress(name, steps + frame_count);
+  simulation.show_progress(progress);
+  int frames = 0;
+  try {
+    simulate(simulation, steps, recording ? &*recording : nullptr);
+  } catch (const RunStopped& stopped) {
+    if (trace) trace->finish();  // the steps before the stop, complete
+    std::string kept_frames = "no frames (stopped before rendering)";
+    // A run that diverged keeps the frames of the steps before; a signal asked to stop now.
+    if (recording && stopped.exit_code() == exit_diverged) {
+      render_recording(simulation, *recording, *renderer, progress, frames);
+      kept_frames = frames_kept(frames, o);
+    }
+    progress.finish();
+    throw RunStopped(stopped.what() + kept_outputs(simulation, o, trace, kept_frames),
+                     stopped.exit_code());
+  }
+  if (trace) trace->finish();
+  if (recording) {
+    try {
+      render_recording(simulation, *recording, *renderer, progress, frames);
+    } catch (const RunStopped& stopped) {
+      progress.finish();
+      throw RunStopped(stopped.what() + kept_outputs(simulation, o, trace, frames_kept(frames, o)),
+                       stopped.exit_code());
+    }
+  }
+  progress.finish();
+  print_summary(simulation, trace, o, frames);
+}
+
+}  // namespace lamina::cli

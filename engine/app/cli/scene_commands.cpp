@@ -1,0 +1,45 @@
+#include "app/cli/scene_commands.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "app/cli/scene_source.h"
+#include "app/cli/simulation.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_json.h"
+#include "scene/scene_world.h"
+
+namespace lamina::cli {
+
+void list_scenes() {
+  const std::vector<BuiltinScene> scenes = builtin_scene_list();
+  std::size_t width = 0;
+  for (const BuiltinScene& s : scenes) width = std::max(width, s.name.size());
+  for (const BuiltinScene& s : scenes) {
+    std::printf("%-*s  %s\n", static_cast<int>(width), s.name.c_str(), s.description.c_str());
+  }
+  std::printf("%-*s  %s\n", static_cast<int>(width), "pyramid:N",
+              "the pyramid with N boxes in its base (pyramid is pyramid:20)");
+}
+
+namespace {
+
+// "1 joint", "3 joints".
+std::string counted(std::size_t count, const char* one, const char* many) {
+  return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
+}  // namespace
+
+void show_scene(const std::string& source) { std::cout << scene_to_json(load_scene(source)); }
+
+void check_scene(const std::string& source) {
+  const Scene scene = load_scene(source);
+  checked_world(scene, world_settings(scene), source);
+  std::cout << source << ": ok, " << counted(scene.bodies.size(), "body", "bodies") << ", "
+            << counted(scene.joints.size(), "joint", "joints") << "\n";
+}
+
+}  // namespace lamina::cli

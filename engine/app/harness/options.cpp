@@ -1,0 +1,48 @@
+#include "app/harness/options.h"
+
+#include <CLI/CLI.hpp>
+
+namespace lamina::tutorial {
+
+ParsedOptions parse_options(int argc, char** argv, const TutorialInfo& info) {
+  CLI::App app(info.summary, info.name);
+  Options o;
+  o.render.out = "images/" + info.chapter;
+  o.render.overlays = info.default_overlays;
+  std::string format = "text";
+  int frames = 0, every = 0;
+  long explain = 0;
+  app.add_option_function<std::string>(
+         "--out", [&o](const std::string& folder) { o.render.out = folder; },
+         "folder for the frames, CSV data and plots")
+      ->default_str(o.render.out.string());
+  auto* frames_option =
+      app.add_option("--frames", frames, "frames per scene")->check(CLI::PositiveNumber);
+  auto* every_option =
+      app.add_option("--every", every, "time steps between frames")->check(CLI::PositiveNumber);
+  add_render_options(app, o.render);
+  auto* explain_option = app.add_option("--explain", explain,
+                                        "print what the engine computed in step STEP (from "
+                                        "t = STEP Δt), with equation numbers; renders nothing")
+                             ->check(CLI::NonNegativeNumber);
+  app.add_option("--explain-format", format, "text or json")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"text", "json"}));
+  app.add_flag("--step-through", o.step_through,
+               "print every step in turn (Enter for the next, "
+               "q to stop); renders nothing")
+      ->excludes(explain_option);
+  if (info.has_cache) app.add_flag("--no-cache", o.no_cache, "solve without the contact cache");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return {std::nullopt, app.exit(e)};
+  }
+  if (*frames_option) o.frames = frames;
+  if (*every_option) o.every = every;
+  if (*explain_option) o.explain_step = explain;
+  o.json = format == "json";
+  return {o, 0};
+}
+
+}  // namespace lamina::tutorial

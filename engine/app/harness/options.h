@@ -1,0 +1,42 @@
+// The options every chapter tutorial takes (CLI11).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "app/harness/render_request.h"
+#include "render/overlay.h"
+
+namespace lamina::tutorial {
+
+// What a tutorial is, as its options and messages name it.
+struct TutorialInfo {
+  std::string name;                   // the executable, e.g. "02_unconstrained_motion"
+  std::string chapter;                // e.g. "ch2": frames go to images/ch2/ by default
+  std::string summary;                // one line for --help
+  render::Overlays default_overlays;  // --overlay when not given
+  bool has_cache = false;             // offers --no-cache (chapters with a contact cache)
+};
+
+struct Options {
+  RenderRequest render;              // --out (the folder for frames, CSV and plots), --size,
+                                     // --overlay, --backend
+  std::optional<int> frames;         // --frames: frames per scene (scene default when empty)
+  std::optional<int> every;          // --every: steps between frames (scene default when empty)
+  std::optional<long> explain_step;  // --explain STEP: print that step, render nothing
+  bool json = false;                 // --explain-format json
+  bool step_through = false;         // --step-through: print every step, render nothing
+  bool no_cache = false;             // --no-cache (only where has_cache)
+};
+
+// The parsed options, or the exit code when parsing ended the run (--help, a bad option; CLI11
+// has printed the message).
+struct ParsedOptions {
+  std::optional<Options> options;
+  int exit_code = 0;
+};
+
+ParsedOptions parse_options(int argc, char** argv, const TutorialInfo& info);
+
+}  // namespace lamina::tutorial

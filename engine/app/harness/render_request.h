@@ -1,0 +1,67 @@
+// What to render and how: one request for the chapter tutorials and `lamina run` alike, filled
+// by the same command-line options, and the one renderer that carries it out.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/backend.h"
+#include "render/camera.h"
+#include "render/frame.h"
+#include "render/overlay.h"
+#include "render/style.h"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
+namespace lamina::tutorial {
+
+struct RenderRequest {
+  std::filesystem::path out;                             // the folder the frames go to
+  render::FrameSize size{1280, 720};                     // --size WxH, in pixels
+  render::Overlays overlays;                             // --overlay LIST
+  render::Backend backend = render::default_backend();   // --backend
+};
+
+// Adds --size, --overlay and --backend to a command line, parsed straight into `request`, whose
+// values are the defaults --help shows. A bad value is one line naming the option. Returns the
+// three options (so that a caller can make them need another, as lamina's need --frames).
+std::vector<CLI::Option*> add_render_options(CLI::App& app, RenderRequest& request);
+
+// "1280x720" → {1280, 720}; throws std::invalid_argument for anything else or a size outside
+// 16..8192 pixels.
+render::FrameSize parse_frame_size(const std::string& text);
+
+// Fills the next frame and sets the step it shows (its status line reads t = step Δt); false
+// once there are no more frames.
+using NextFrame = std::function<bool(render::Frame& frame, long& step)>;
+
+// Renders frames into request.out: an OpenGL context on this thread, PNG encoders on others,
+// every file complete or absent (engine/output).
+class FrameRenderer {
+ public:
+  // Creates the output folder and opens the context. Throws OutputError or GlContextError.
+  explicit FrameRenderer(const RenderRequest& request);
+  ~FrameRenderer();
+  FrameRenderer(const FrameRenderer&) = delete;
+  FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+  // Renders `<name>_0000.png`, `<name>_0001.png`, ... of the world region `view` (fitted once for
+  // all of them) until `next` returns false; returns how many. An exception from `next` leaves
+  // the frames before it queued.
+  int render(const std::string& name, const render::Rect& view, double dt, const NextFrame& next);
+  // Waits until every queued frame is written; throws OutputError for the first failure.
+  void finish();
+
+ private:
+  struct Pipeline;
+  RenderRequest request_;
+  std::unique_ptr<Pipeline> pipeline_;
+};
+
+}  // namespace lamina::tutorial

@@ -1,0 +1,171 @@
+// Rendering: the GL thread steps the scene and draws; encoder threads write the PNGs.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <thread>
+
+#include "app/harness/render_request.h"
+#include "app/harness/runs.h"
+#include "output/output_file.h"
+#include "render/frame_writer.h"
+#include "render/renderer.h"
+
+namespace lamina::tutorial {
+namespace {
+
+constexpr std::size_t queued_frames = 4;  // images waiting for an encoder, at most
+constexpr int smallest_side = 16;
+constexpr int largest_side = 8192;
+
+int encoder_threads() {
+  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 4u));
+}
+
+std::string frame_name(const std::string& scene, int index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "_%04d.png", index);
+  return scene + name;
+}
+
+// "t = 0.500 s · step 30 · Δt = 1/60 s"
+std::string status_line(long step, double dt) {
+  char text[96];
+  const double rate = 1.0 / dt;
+  if (std::abs(rate - std::round(rate)) < 1e-9) {
+    std::snprintf(text, sizeof text, "t = %.3f s · step %ld · Δt = 1/%.0f s", step * dt, step,
+                  rate);
+  } else {
+    std::snprintf(text, sizeof text, "t = %.3f s · step %ld · Δt = %.4g s", step * dt, step, dt);
+  }
+  return text;
+}
+
+// A CLI11 check that runs `parse` and turns its exception into CLI11's message.
+template <typename Parse>
+CLI::Validator checked_by(Parse parse, const std::string& description) {
+  return CLI::Validator(
+      [parse](std::string& text) -> std::string {
+        try {
+          parse(text);
+          return {};
+        } catch (const std::invalid_argument& e) {
+          return e.what();
+        }
+      },
+      description);
+}
+
+}  // namespace
+
+render::FrameSize parse_frame_size(const std::string& text) {
+  const char* end = text.data() + text.size();
+  render::FrameSize size{0, 0};
+  const auto width = std::from_chars(text.data(), end, size.width);
+  const bool has_x = width.ec == std::errc() && width.ptr != end && *width.ptr == 'x';
+  const auto height = has_x ? std::from_chars(width.ptr + 1, end, size.height) : width;
+  if (!has_x || height.ec != std::errc() || height.ptr != end) {
+    throw std::invalid_argument("expected WxH such as 1280x720, got '" + text + "'");
+  }
+  if (std::min(size.width, size.height) < smallest_side ||
+      std::max(size.width, size.height) > largest_side) {
+    throw std::invalid_argument("each side must be 16..8192 pixels, got '" + text + "'");
+  }
+  return size;
+}
+
+std::vector<CLI::Option*> add_render_options(CLI::App& app, RenderRequest& request) {
+  std::vector<std::string> backends;
+  for (const auto& built : render::built_backends()) backends.push_back(built.first);
+  CLI::Option* size = app.add_option_function<std::string>(
+      "--size", [&request](const std::string& text) { request.size = parse_frame_size(text); },
+      "frame size in pixels, each side 16..8192");
+  size->type_name("WxH")
+      ->default_str(std::to_string(request.size.width) + "x" + std::to_string(request.size.height))
+      ->check(checked_by(parse_frame_size, "WxH"));
+  CLI::Option* overlays = app.add_option_function<std::string>(
+      "--overlay",
+      [&request](const std::string& text) { request.overlays = render::Overlays::parse(text); },
+      "layers to show: contacts, normals, forces, velocities, centres, axes (comma-separated), "
+      "all or none");
+  overlays->type_name("LIST")
+      ->default_str(request.overlays.to_string())
+      ->check(checked_by(render::Overlays::parse, "LIST"));
+  CLI::Option* backend = app.add_option_function<std::string>(
+      "--backend",
+      [&request](const std::string& name) { request.backend = render::built_backends().at(name); },
+      "OpenGL backend (both draw the same pixels)");
+  backend->type_name("NAME")
+      ->default_str(render::backend_name(request.backend))
+      ->check(CLI::IsMember(backends));
+  return {size, overlays, backend};
+}
+
+struct FrameRenderer::Pipeline {
+  std::unique_ptr<render::GlContext> context;
+  render::Renderer renderer;
+  render::FrameWriter writer;
+
+  explicit Pipeline(const RenderRequest& r)
+      : context(render::open_context(r.backend)),
+        renderer(*context, r.size),
+        writer(encoder_threads(), queued_frames) {}
+};
+
+FrameRenderer::FrameRenderer(const RenderRequest& request) : request_(request) {
+  prepare_output_folder(request_.out);
+  pipeline_ = std::make_unique<Pipeline>(request_);
+}
+
+FrameRenderer::~FrameRenderer() = default;
+
+int FrameRenderer::render(const std::string& name, const render::Rect& view, double dt,
+                          const NextFrame& next) {
+  const render::Rect area = render::Style::for_size(request_.size)
+                                .drawing_area(request_.size, request_.overlays.has(render::Overlay::axes));
+  const render::Camera camera = render::Camera::fit(view, area);
+  int count = 0;
+  render::Frame frame;
+  long step = 0;
+  while (next(frame = render::Frame(), step)) {
+    frame.status = status_line(step, dt);
+    pipeline_->writer.submit(request_.out / frame_name(name, count++),
+                             pipeline_->renderer.render(frame, camera, request_.overlays));
+  }
+  return count;
+}
+
+void FrameRenderer::finish() { pipeline_->writer.finish(); }
+
+void render_scenes(const TutorialInfo& info, const Options& o,
+                   const std::vector<SceneFactory>& scenes) {
+  FrameRenderer renderer(o.render);
+  for (const SceneFactory& make : scenes) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto scene = make(o);
+    const SceneInfo s = scene->info();
+    const int frames = o.frames.value_or(s.frames), every = o.every.value_or(s.every);
+    int drawn = 0;
+    // Frame f shows step f × every: the state at its t, with what that step solved.
+    renderer.render(s.name, s.view, s.time_step, [&](render::Frame& frame, long& step) {
+      if (drawn == frames) return false;
+      for (int k = 0; drawn > 0 && k < every; ++k) scene->step();
+      scene->draw(frame);
+      step = static_cast<long>(drawn++) * every;
+      return true;
+    });
+    renderer.finish();
+    const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+    scene->write_data(o.render.out);
+    std::printf(
+        "%s: %d frames of %s, %dx%d, in %.2f s (%.1f frames/s: physics, render, "
+        "encode, write) -> %s\n",
+        info.name.c_str(), frames, s.name.c_str(), o.render.size.width, o.render.size.height,
+        seconds.count(), frames / seconds.count(), o.render.out.c_str());
+  }
+}
+
+}  // namespace lamina::tutorial

@@ -1,0 +1,46 @@
+#include "app/views/contact/world_view.h"
+
+#include "app/views/motion/body_view.h"
+
+namespace lamina::view {
+namespace {
+
+constexpr render::Colour fixed_fill = render::tint(render::palette::grey, 0.3);
+
+}  // namespace
+
+render::Body body_view(const RigidBody& body, const Shape& shape, render::Colour fill) {
+  render::Body view = box_view(body, shape.half_extents, fill);
+  if (!shape.is_box()) {
+    view.shape = render::Body::Shape::circle;
+    view.radius = shape.radius;
+  }
+  return view;
+}
+
+render::Contact contact_view(const ContactInfo& c) {
+  render::Contact view;
+  view.point = c.point.head<2>();
+  view.normal = c.normal.head<2>();
+  view.tangent = render::Vec2(-c.normal.y(), c.normal.x());
+  view.normal_force = c.lambda_normal;
+  view.friction_force = c.lambda_tangent;
+  view.cached = c.cached;
+  return view;
+}
+
+render::Frame world_frame(const World& world, const std::vector<RigidBody>& at_t) {
+  render::Frame frame;
+  for (std::size_t i = 0; i < at_t.size(); ++i) {
+    const RigidBody& body = at_t[i];
+    frame.bodies.push_back(body_view(body, world.shape(static_cast<int>(i)),
+                                     body.is_static() ? fixed_fill : render::Body().fill));
+  }
+  for (const ContactInfo& c : world.contacts()) frame.contacts.push_back(contact_view(c));
+  for (int j = 0; j < world.joint_count(); ++j) {
+    if (auto joint = joint_view(at_t, world.joint(j))) frame.joints.push_back(*joint);
+  }
+  return frame;
+}
+
+}  // namespace lamina::view

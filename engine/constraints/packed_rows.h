@@ -1,0 +1,85 @@
+// The rows of the MLCP as they are assembled once per step and swept (eq. 3-16, 3-24): one
+// struct per row, contiguous, holding the text's Jsp, Bsp (its Convert), Jmap, η_i, 1/d_i and
+// the bounds side by side, each block in the layout of N components (block_layout.h: all six,
+// or [v_x v_y ω_z] in the plane).
+//
+// The three products every use of the MLCP is made of are defined here, once:
+//   a = B λ        transpose_multiply  (the text's TransposeMultiply, scaled by λ[i]: the text
+//                                       writes λ[b1], λ[b2]; DIGEST item 1)
+//   J_i · X        row_dot             (the text's Multiply, guarding Jmap[1] = −1; item 2)
+//   F_c = Jᵀ λ     for_each_force      (eq. 3-11)
+// Mlcp (mlcp.h) assembles and views the rows; PgsSolver (pgs_solver.h) sweeps them.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "constraints/block_layout.h"
+
+namespace lamina {
+
+struct PackedRowScalars {
+  std::array<int, 2> map{-1, -1};  // Jmap: body indices, map[1] = −1 for a one-body row
+  double eta = 0.0;                // η_i, in m/s² or rad/s² (eq. 3-16)
+  double inverse_d = 0.0;          // 1/d_i, d_i = J_i · B_i
+  double lambda_min = 0.0;         // λ⁻ of a row with fixed bounds, in N
+  double lambda_max = 0.0;         // λ⁺ of a row with fixed bounds, in N
+  int friction_of = -1;            // the contact row bounding a friction row, or −1
+  double mu = 0.0;                 // μ of a friction row
+  double zeta = 0.0;               // ζ_i, the velocity asked of J_i V(t+Δt), in m/s or rad/s
+
+  bool two_bodies() const { return map[1] >= 0; }
+};
+
+template <int N>
+struct PackedRow : PackedRowScalars {
+  static constexpr int size = N;  // components per block
+  std::array<Block<N>, 2> J;  // J_i's blocks for map[0], map[1] (Jsp); zero for a missing body
+  std::array<Block<N>, 2> B;  // B_i's blocks, M⁻¹ J_iᵀ (Bsp); zero likewise
+};
+
+template <int N>
+using PackedRows = std::vector<PackedRow<N>>;
+
+// The bounds of a row for the current λ (λ[0..s)): fixed, or ±μ λc for a friction row
+// (eq. 3-26). `Row` is a packed row or a ConstraintRow.
+template <class Row>
+std::array<double, 2> bounds_of(const Row& row, const double* lambda) {
+  if (row.friction_of < 0) return {row.lambda_min, row.lambda_max};
+  // eq. 3-26: a friction row is bounded by ±μ λc of its contact row
+  const double limit = row.mu * lambda[row.friction_of];
+  return {-limit, limit};
+}
+
+// J_i · X for per-body blocks X.
+template <int N>
+double row_dot(const PackedRow<N>& row, const std::vector<Block<N>>& per_body) {
+  const Block<N>& second = row.two_bodies() ? per_body[row.map[1]] : per_body[row.map[0]];
+  return row_dot<N>(row.J, per_body[row.map[0]], second, row.two_bodies());
+}
+
+// a = B λ, one block per body: the text's TransposeMultiply, scaled by λ[i].
+template <int N>
+void transpose_multiply(const PackedRows<N>& rows, int body_count, const double* lambda,
+                        std::vector<Block<N>>& a) {
+  a.assign(static_cast<std::size_t>(body_count), Block<N>::Zero());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (lambda[i] == 0.0) continue;  // adds nothing (a split-impulse solve starts from λ = 0)
+    const PackedRow<N>& row = rows[i];
+    a[row.map[0]] += lambda[i] * row.B[0];
+    if (row.two_bodies()) a[row.map[1]] += lambda[i] * row.B[1];
+  }
+}
+
+// F_c = Jᵀ λ (eq. 3-11), row by row: add(body, λ_i, J_i's block of that body) for each block,
+// in row order, so every sum of the forces on a body is taken in the same order.
+template <int N, class Add>
+void for_each_force(const PackedRows<N>& rows, const double* lambda, Add&& add) {
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const PackedRow<N>& row = rows[i];
+    add(row.map[0], lambda[i], row.J[0]);
+    if (row.two_bodies()) add(row.map[1], lambda[i], row.J[1]);
+  }
+}
+
+}  // namespace lamina

@@ -1,0 +1,122 @@
+#include "trace/trace_json.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/shortest_number.h"
+
+namespace lamina {
+namespace {
+
+using Json = nlohmann::json;
+
+// The line is written directly, not built as a JSON tree: a 210-box pyramid writes about
+// 600 numbers a step, and trees made tracing several times slower than simulating.
+class LineWriter {
+ public:
+  explicit LineWriter(std::string& out) : out_(out) {}
+
+  // `"key":`, after a comma unless it opens the object.
+  LineWriter& key(const char* name) {
+    if (out_.back() != '{') out_ += ',';
+    out_ += '"';
+    out_ += name;
+    out_ += "\":";
+    return *this;
+  }
+  // A finite number in shortest round-trip form; JSON has no infinities or NaN: null.
+  void number(double x) {
+    if (std::isfinite(x)) {
+      append_shortest(out_, x);
+    } else {
+      out_ += "null";
+    }
+  }
+  void vec2(const Vec2d& v) {
+    out_ += '[';
+    number(v[0]);
+    out_ += ',';
+    number(v[1]);
+    out_ += ']';
+  }
+  void text(const std::string& s) { out_ += Json(s).dump(); }  // quoted and escaped
+  void raw(const char* s) { out_ += s; }
+
+ private:
+  std::string& out_;
+};
+
+void write_body(LineWriter& w, const BodyState& b) {
+  w.raw("{");
+  w.key("name").text(b.name);
+  w.key("position").vec2(b.position);
+  w.key("angle").number(b.angle);
+  w.key("velocity").vec2(b.velocity);
+  w.key("angular_velocity").number(b.angular_velocity);
+  w.raw("}");
+}
+
+void write_contact(LineWriter& w, const ContactState& c) {
+  w.raw("{");
+  w.key("bodies").raw("[");
+  w.text(c.bodies[0]);
+  w.raw(",");
+  w.text(c.bodies[1]);
+  w.raw("]");
+  w.key("point").vec2(c.point);
+  w.key("normal").vec2(c.normal);
+  w.key("depth").number(c.depth);
+  w.key("normal_impulse").number(c.normal_impulse);
+  w.key("tangent_impulse").number(c.tangent_impulse);
+  w.key("cached").raw(c.cached ? "true" : "false");
+  w.raw("}");
+}
+
+// `"key":[item,item,...]` of the items written by `write`.
+template <typename Item, typename Write>
+void write_list(LineWriter& w, const char* key, const std::vector<Item>& items, Write write) {
+  w.key(key).raw("[");
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) w.raw(",");
+    write(w, items[i]);
+  }
+  w.raw("]");
+}
+
+BodyState body_state(const Json& j) {
+  return {j.at("name"), j.at("position"), j.at("angle"), j.at("velocity"), j.at("angular_velocity")};
+}
+
+ContactState contact_state(const Json& j) {
+  return {j.at("bodies"), j.at("point"), j.at("normal"), j.at("depth"), j.at("normal_impulse"),
+          j.at("tangent_impulse"), j.at("cached")};
+}
+
+}  // namespace
+
+std::string trace_json_line(const TraceStep& step) {
+  std::string line = "{";
+  LineWriter w(line);
+  w.key("step").raw(std::to_string(step.step).c_str());
+  w.key("time").number(step.time);
+  write_list(w, "bodies", step.bodies, write_body);
+  write_list(w, "contacts", step.contacts, write_contact);
+  w.raw("}");
+  return line;
+}
+
+TraceStep parse_trace_line(const std::string& line) {
+  try {
+    const Json j = Json::parse(line);
+    TraceStep step{j.at("step"), j.at("time"), {}, {}};
+    for (const Json& b : j.at("bodies")) step.bodies.push_back(body_state(b));
+    for (const Json& c : j.at("contacts")) step.contacts.push_back(contact_state(c));
+    return step;
+  } catch (const Json::exception& e) {
+    throw std::invalid_argument(std::string("not a trace line: ") + e.what());
+  }
+}
+
+}  // namespace lamina

@@ -1,0 +1,23 @@
+// Traces as JSON Lines: one object per step, keys in the order below, every number in the
+// shortest form that reads back to the same double.
+//
+//   {"step":1,"time":0.016666666666666666,
+//    "bodies":[{"name":"box","position":[0.0,1.99],"angle":0.3,"velocity":[0.0,-0.16],
+//               "angular_velocity":0.0}],
+//    "contacts":[{"bodies":["ground","box"],"point":[0.1,0.0],"normal":[0.0,1.0],"depth":0.001,
+//                 "normal_impulse":0.08,"tangent_impulse":0.0,"cached":true}]}
+#pragma once
+
+#include <string>
+
+#include "trace/trace.h"
+
+namespace lamina {
+
+// The step as one line of JSON, without the line break.
+std::string trace_json_line(const TraceStep& step);
+
+// A line of a JSON Lines trace read back. Throws std::invalid_argument for anything else.
+TraceStep parse_trace_line(const std::string& line);
+
+}  // namespace lamina
