@@ -59,13 +59,12 @@ Scene box_scene(const Case& c) {
 World lamina_world(const Scene& scene, PositionCorrection correction) {
   WorldSettings settings;
   settings.contact.correction = correction;
-  settings.step.gravity = Vec3(scene.gravity[0], scene.gravity[1], 0.0);
-  settings.step.dt = scene.dt;
+  settings.step = scene.step;
   World world(settings);
   for (const BodyDescription& b : scene.bodies) {
     const Vec3 x(b.position[0], b.position[1], 0.0);
     const Material material{b.friction, b.restitution};
-    const auto [hx, hy] = b.shape.half_extents;
+    const double hx = b.shape.half_extents.x(), hy = b.shape.half_extents.y();
     if (b.is_static) {
       world.add_static_box(hx, hy, x, b.angle, material);
     } else {
@@ -147,8 +146,8 @@ Outcome run_lamina(const Scene& scene, PositionCorrection correction) {
   for (const ContactInfo& c : world.contacts()) {
     out.points.push_back(Vec2(c.point.x() - out.x, c.point.y() - out.y));
     // DIGEST "Units": λ is a force; the impulse over the step is λ Δt
-    out.impulses.push_back(c.lambda_normal * scene.dt);
-    out.frictions.push_back(c.lambda_tangent * scene.dt);
+    out.impulses.push_back(c.lambda_normal * scene.step.dt);
+    out.frictions.push_back(c.lambda_tangent * scene.step.dt);
   }
   sort_left_to_right(out);
   return out;
@@ -166,7 +165,7 @@ const Case cases[] = {{"dropped flat", 2.0, 0.0}, {"dropped tilted 0.3", 2.0, 0.
 
 TEST_SUITE("Box2dComparison") {
   TEST_CASE("a box on the ground rests like Box2D's: points, impulses, pose and rest step") {
-    const double dt = Scene{}.dt;
+    const double dt = Scene{}.step.dt;
     std::ostringstream table;
     table << "| case | quantity | Box2D 2.4.1 | Lamina | bar | Lamina, text's Baumgarte |\n"
           << "|---|---|---|---|---|---|\n";

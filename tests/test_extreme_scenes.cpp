@@ -37,9 +37,9 @@ double momentum_x(const Watch& watch, const std::string& prefix) {
 Scene corner_scene(double dt, int iterations, double heavy, double light, double big, double side) {
   namespace limits = scene_limits;
   Scene s;
-  s.dt = dt;
-  s.iterations = iterations;
-  s.gravity = {side * limits::gravity.high, limits::gravity.low};
+  s.step.dt = dt;
+  s.step.iterations = iterations;
+  s.step.gravity = Vec3(side * limits::gravity.high, limits::gravity.low, 0.0);
   const double x = side * limits::coordinate.high;
   BodyDescription floor =
       box("floor", {x, limits::coordinate.low}, {limits::size.high, limits::size.high});

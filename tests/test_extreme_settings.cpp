@@ -93,8 +93,8 @@ TEST_SUITE("ExtremeSettings") {
           CAPTURE(dt);
           CAPTURE(iterations);
           Scene scene = builtin_scene(name);
-          scene.dt = dt;
-          scene.iterations = iterations;
+          scene.step.dt = dt;
+          scene.step.iterations = iterations;
           Watch watch(scene);
           require_sound(watch, dt < 1e-3 ? 1.0 : 3.0);  // 1 s: 10⁴ steps at Δt = 1e-4
           if (iterations == 0 || name == "bridge") continue;
@@ -112,8 +112,8 @@ TEST_SUITE("ExtremeSettings") {
   TEST_CASE("the longest step a scene file can ask for ends, finite") {
     // Δt = 1 s and 10000 sweeps over the 210-box pyramid: 0.16 s a step (Release, measured).
     Scene scene = pyramid_scene(20);
-    scene.dt = scene_limits::dt.high;
-    scene.iterations = scene_limits::iterations.high;
+    scene.step.dt = scene_limits::dt.high;
+    scene.step.iterations = scene_limits::iterations.high;
     Watch watch(scene);
     require_sound(watch, 2.0);
   }

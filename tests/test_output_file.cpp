@@ -21,6 +21,7 @@ namespace {
 
 using namespace lamina;
 using namespace lamina::render;
+using lamina::Vec2;
 namespace fs = std::filesystem;
 
 // The message of the OutputError `action` throws; fails the test when it throws nothing.

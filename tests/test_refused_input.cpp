@@ -47,10 +47,10 @@ TEST_SUITE("RefusedInput") {
       std::function<void(Scene&, double)> edit;
     };
     const std::vector<Limit> cases = {
-        {"dt", limits::dt, [](Scene& s, double v) { s.dt = v; }},
-        {"beta", limits::beta, [](Scene& s, double v) { s.beta = v; }},
-        {"gravity[0]", limits::gravity, [](Scene& s, double v) { s.gravity[0] = v; }},
-        {"gravity[1]", limits::gravity, [](Scene& s, double v) { s.gravity[1] = v; }},
+        {"dt", limits::dt, [](Scene& s, double v) { s.step.dt = v; }},
+        {"beta", limits::beta, [](Scene& s, double v) { s.step.beta = v; }},
+        {"gravity[0]", limits::gravity, [](Scene& s, double v) { s.step.gravity[0] = v; }},
+        {"gravity[1]", limits::gravity, [](Scene& s, double v) { s.step.gravity[1] = v; }},
         {"bodies[1].position[0]", limits::coordinate,
          [](Scene& s, double v) { s.bodies[1].position[0] = v; }},
         {"bodies[1].position[1]", limits::coordinate,
@@ -86,7 +86,7 @@ TEST_SUITE("RefusedInput") {
     JointDescription rod;
     rod.type = JointType::distance;
     rod.bodies = {"ground", "disc"};
-    rod.anchors = {Vec2d{3.0, 3.0}, Vec2d{3.0, 0.5}};
+    rod.anchors = {Vec2{3.0, 3.0}, Vec2{3.0, 0.5}};
     valid.joints = {pin, rod};
     REQUIRE(refusal(valid) == "(accepted)");
     const double inf = std::numeric_limits<double>::infinity();

@@ -9,6 +9,7 @@
 namespace {
 
 using namespace lamina::render;
+using lamina::Vec2;
 
 Image render_with(Backend backend) {
   const auto context = open_context(backend);

@@ -14,6 +14,7 @@
 namespace {
 
 using namespace lamina::render;
+using lamina::Vec2;
 namespace fs = std::filesystem;
 
 std::vector<std::uint8_t> read_bytes(const fs::path& path) {

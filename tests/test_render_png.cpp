@@ -12,6 +12,7 @@
 namespace {
 
 using namespace lamina::render;
+using lamina::Vec2;
 using testing::test_size;
 
 // A 37 × 23 image whose every pixel differs from its neighbours.

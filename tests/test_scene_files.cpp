@@ -62,10 +62,10 @@ TEST_SUITE("SceneFiles") {
         {"name": "ball", "shape": {"type": "circle", "radius": 0.25}, "position": [3, 1]}]})",
                                 "example");
     // Defaults stated in docs/scene-format.md.
-    CHECK(s.gravity == Vec2d{0.0, -9.8});
-    CHECK(s.dt == 1.0 / 60.0);
-    CHECK(s.iterations == 10);
-    CHECK(s.beta == 0.2);
+    CHECK(s.step.gravity == Vec3(0.0, -9.8, 0.0));
+    CHECK(s.step.dt == 1.0 / 60.0);
+    CHECK(s.step.iterations == 10);
+    CHECK(s.step.beta == 0.2);
     REQUIRE(s.bodies.size() == 2);
     CHECK(s.bodies[0].is_static);
     CHECK(s.bodies[1].shape.type == ShapeType::circle);
@@ -85,16 +85,16 @@ TEST_SUITE("SceneFiles") {
       const Scene read_back = parse_scene(written, entry.name);
       CHECK(scene_to_json(read_back) == written);
       CHECK(read_back.bodies.size() == scene.bodies.size());
-      CHECK(read_back.dt == scene.dt);
+      CHECK(read_back.step.dt == scene.step.dt);
     }
   }
 
   TEST_CASE("numbers round-trip exactly") {
     Scene scene = builtin_scene("box-on-ground-tilted");
-    scene.dt = 1.0 / 3.0;
+    scene.step.dt = 1.0 / 3.0;
     scene.bodies[1].angle = 0.1 + 0.2;  // 0.30000000000000004, not 0.3
     const Scene back = parse_scene(scene_to_json(scene), "round-trip");
-    CHECK(back.dt == scene.dt);
+    CHECK(back.step.dt == scene.step.dt);
     CHECK(back.bodies[1].angle == scene.bodies[1].angle);
   }
 

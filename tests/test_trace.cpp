@@ -83,9 +83,9 @@ TEST_SUITE("Trace") {
         CAPTURE(b.name);
         // Exact: the shortest round-trip form reads back to the same double (no tolerance).
         CHECK(b.name == scene.bodies[i].name);
-        CHECK(b.position == Vec2d{body.x.x(), body.x.y()});
+        CHECK(b.position == Vec2{body.x.x(), body.x.y()});
         CHECK(b.angle == planar_angle(body.q));
-        CHECK(b.velocity == Vec2d{body.v.x(), body.v.y()});
+        CHECK(b.velocity == Vec2{body.v.x(), body.v.y()});
         CHECK(b.angular_velocity == body.angular_velocity.z());
       }
       CHECK(k == last.bodies.size());
@@ -110,12 +110,12 @@ TEST_SUITE("Trace") {
     double impulse = 0.0;
     for (const ContactState& c : record.contacts) {
       CHECK(c.bodies == std::array<std::string, 2>{"ground", "box"});
-      CHECK(c.normal == Vec2d{0.0, 1.0});
+      CHECK(c.normal == Vec2{0.0, 1.0});
       impulse += c.normal_impulse;
     }
     // m = 1 kg (density 1 kg/m², 1 m²): at rest the contacts carry its weight. The tolerance
     // is the PGS residual after 10 sweeps, warm started from a resting cache.
-    const double m_g_dt = 1.0 * 9.8 * scene.dt;
+    const double m_g_dt = 1.0 * 9.8 * scene.step.dt;
     CHECK(impulse == doctest::Approx(m_g_dt).epsilon(1e-6));
   }
 

@@ -66,12 +66,12 @@ State state_at(double t) {
   return s;
 }
 
-render::Vec2 planar(const Vec3& v) { return v.head<2>(); }
+Vec2 planar(const Vec3& v) { return v.head<2>(); }
 
 class RotatingBox : public tutorial::Scene {
  public:
   tutorial::SceneInfo info() const override {
-    return {"rotating_box", dt, 121, 1, {render::Vec2(-3.3, -2.45), render::Vec2(5.8, 2.45)}};
+    return {"rotating_box", dt, 121, 1, {Vec2(-3.3, -2.45), Vec2(5.8, 2.45)}};
   }
 
   void step() override { ++step_; }

@@ -19,7 +19,7 @@ using tutorial::fixed;
 
 constexpr double dt = 1.0 / 30.0;            // Δt, in s (large on purpose: the drift shows)
 const Vec3 gravity(0.0, -9.8, 0.0);          // g, in m/s²
-const render::Vec2 half_extents(0.4, 0.25);  // box half extents, in m
+const Vec2 half_extents(0.4, 0.25);  // box half extents, in m
 constexpr double density = 1.0;              // kg/m²
 const Vec3 launch(0.6, 0.6, 0.0);            // x(0) in each panel, in m
 const Vec3 throw_velocity(3.0, 6.5, 0.0);    // v(0), in m/s
@@ -34,7 +34,7 @@ struct Run {
   render::Colour colour;
   Vec3 origin;  // where this panel's throw starts
   std::vector<RigidBody> bodies;
-  std::vector<render::Vec2> trail;
+  std::vector<Vec2> trail;
 };
 
 double total_energy(const RigidBody& b) {
@@ -69,7 +69,7 @@ class ThrownBox : public tutorial::Scene {
   }
 
   tutorial::SceneInfo info() const override {
-    return {"thrown_box", dt, 41, 1, {render::Vec2(-0.3, -1.6), render::Vec2(13.0, 5.4)}};
+    return {"thrown_box", dt, 41, 1, {Vec2(-0.3, -1.6), Vec2(13.0, 5.4)}};
   }
 
   void step() override {
@@ -95,7 +95,7 @@ class ThrownBox : public tutorial::Scene {
     }
     const double divider = launch.x() + panel_offset - 1.3;
     frame.paths.push_back(
-        {{render::Vec2(divider, -1.6), render::Vec2(divider, 3.6)}, render::palette::grid, false});
+        {{Vec2(divider, -1.6), Vec2(divider, 3.6)}, render::palette::grid, false});
     frame.legend = {
         {render::LegendEntry::Sample::dashed_line, render::palette::grey, "exact: x₀ + v₀t + ½gt²"},
         {render::LegendEntry::Sample::line, runs_[0].colour, "explicit Euler: centre's path"},
@@ -128,8 +128,8 @@ class ThrownBox : public tutorial::Scene {
                             total_energy(runs_[1].bodies[0]), initial_energy_});
   }
 
-  std::vector<render::Vec2> exact_path(const Vec3& origin) const {
-    std::vector<render::Vec2> points;
+  std::vector<Vec2> exact_path(const Vec3& origin) const {
+    std::vector<Vec2> points;
     const int last = info().frames - 1;
     for (int i = 0; i <= last; ++i) points.push_back(exact_position(origin, i * dt).head<2>());
     return points;

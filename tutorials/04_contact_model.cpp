@@ -28,7 +28,6 @@ namespace {
 
 using namespace lamina;
 using tutorial::fixed;
-using Vec2r = render::Vec2;
 
 constexpr double dt = 1.0 / 60.0;       // Δt, in s (the scenes' default)
 constexpr double g = 9.8;               // |g|, in m/s²
@@ -60,10 +59,10 @@ double penetration(const RigidBody& box) {
 
 // Landing impacts are tens of times the weight: an arrow longer than `longest_force` is drawn
 // at that length, and a label `offset` from its tip gives the force.
-void cut_arrow(render::Frame& frame, const Vec2r& from, const Vec2r& direction, double& force,
-               const std::string& symbol, render::Colour colour, const Vec2r& offset) {
+void cut_arrow(render::Frame& frame, const Vec2& from, const Vec2& direction, double& force,
+               const std::string& symbol, render::Colour colour, const Vec2& offset) {
   if (std::abs(force) <= longest_force) return;
-  const Vec2r tip = from + force_scale * std::copysign(longest_force, force) * direction;
+  const Vec2 tip = from + force_scale * std::copysign(longest_force, force) * direction;
   frame.labels.push_back({tip + offset, symbol + " = " + fixed(force, 0) + " N (arrow cut)",
                           colour, render::Label::Align::left});
   force = std::copysign(longest_force, force);
@@ -91,7 +90,7 @@ class DropRun {
 
   // Draws the ground-less part of the run (box, contacts, corner names), shifted by `dx` in x.
   void draw(render::Frame& frame, double dx, render::Colour colour) const {
-    const Vec2r shift(dx, 0.0);
+    const Vec2 shift(dx, 0.0);
     render::Body box = view::body_view(box_at_t(), run_.world().shape(1), tint(colour, 0.35));
     box.centre += shift;
     frame.bodies.push_back(box);
@@ -99,12 +98,12 @@ class DropRun {
       render::Contact view = view::contact_view(c);
       view.point += shift;
       cut_arrow(frame, view.point, view.normal, view.normal_force, "λ_n",
-                render::palette::bluish_green, Vec2r(0.08, 0.0));
+                render::palette::bluish_green, Vec2(0.08, 0.0));
       cut_arrow(frame, view.point, view.tangent, view.friction_force, "λ_t",
-                render::palette::orange, Vec2r(0.0, -0.2));
+                render::palette::orange, Vec2(0.0, -0.2));
       frame.contacts.push_back(view);
       const bool left = corner_side(c) < 0.0;
-      frame.labels.push_back({view.point + Vec2r(left ? -0.14 : 0.14, 0.1), corner_name(c),
+      frame.labels.push_back({view.point + Vec2(left ? -0.14 : 0.14, 0.1), corner_name(c),
                               render::palette::ink,
                               left ? render::Label::Align::right : render::Label::Align::left});
     }
@@ -190,7 +189,7 @@ class DropRun {
   double first_corner_ = 0.0;  // side (−1, +1) of corner a, the first contact's
 };
 
-void draw_ground(render::Frame& frame) { frame.grounds.push_back({Vec2r::Zero(), Vec2r::UnitY()}); }
+void draw_ground(render::Frame& frame) { frame.grounds.push_back({Vec2::Zero(), Vec2::UnitY()}); }
 
 tutorial::Explanation titled(const std::string& prefix, tutorial::Explanation e) {
   for (tutorial::Section& s : e) s.title = prefix + s.title;
@@ -203,7 +202,7 @@ class Landing : public tutorial::Scene {
   explicit Landing(const tutorial::Options& o) : run_(!o.no_cache) {}
 
   tutorial::SceneInfo info() const override {
-    return {"landing", dt, 100, 1, {Vec2r(-3.4, -1.2), Vec2r(3.4, 2.8)}};
+    return {"landing", dt, 100, 1, {Vec2(-3.4, -1.2), Vec2(3.4, 2.8)}};
   }
   void step() override { run_.step(); }
 
@@ -233,7 +232,7 @@ class CacheOnVsOff : public tutorial::Scene {
   CacheOnVsOff() : runs_{DropRun(true), DropRun(false)} {}
 
   tutorial::SceneInfo info() const override {
-    return {"cache_on_vs_off", dt, 100, 1, {Vec2r(-5.4, -1.5), Vec2r(5.4, 2.9)}};
+    return {"cache_on_vs_off", dt, 100, 1, {Vec2(-5.4, -1.5), Vec2(5.4, 2.9)}};
   }
   void step() override {
     for (DropRun& run : runs_) run.step();
@@ -248,7 +247,7 @@ class CacheOnVsOff : public tutorial::Scene {
     frame.panels.push_back(runs_[0].panel(render::Corner::bottom_left, render::palette::blue));
     frame.panels.push_back(
         runs_[1].panel(render::Corner::bottom_right, render::palette::vermillion));
-    frame.paths.push_back({{Vec2r(0.0, 0.0), Vec2r(0.0, 2.9)},
+    frame.paths.push_back({{Vec2(0.0, 0.0), Vec2(0.0, 2.9)},
                            render::palette::grid, false});
     frame.legend_corner = render::Corner::top_right;
   }

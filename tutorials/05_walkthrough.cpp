@@ -21,7 +21,6 @@ namespace {
 
 using namespace lamina;
 using tutorial::fixed;
-using Vec2r = render::Vec2;
 
 constexpr double tilt = 0.005;    // θ1(τ), in rad
 constexpr double depth = 0.01;    // how deep corner a starts, in m
@@ -61,9 +60,9 @@ std::string pair_text(const Vec3& v, int decimals) {
 }
 
 // A segment clipped to the square |p − centre|∞ ≤ half (Liang–Barsky); false when outside.
-bool clip(Vec2r& a, Vec2r& b, const Vec2r& centre, double half) {
+bool clip(Vec2& a, Vec2& b, const Vec2& centre, double half) {
   double t0 = 0.0, t1 = 1.0;
-  const Vec2r d = b - a;
+  const Vec2 d = b - a;
   for (int axis = 0; axis < 2; ++axis) {
     for (double side : {-1.0, 1.0}) {
       const double p = side * d[axis], q = half - side * (a[axis] - centre[axis]);
@@ -77,7 +76,7 @@ bool clip(Vec2r& a, Vec2r& b, const Vec2r& centre, double half) {
     }
   }
   if (t0 > t1) return false;
-  const Vec2r start = a;
+  const Vec2 start = a;
   a = start + t0 * d;
   b = start + t1 * d;
   return true;
@@ -89,20 +88,20 @@ class Walkthrough : public tutorial::Scene {
 
   tutorial::SceneInfo info() const override {
     return {"walkthrough", run_.world().settings().step.dt, 120, 1,
-            {Vec2r(-3.45, -0.42), Vec2r(0.95, 2.0)}};
+            {Vec2(-3.45, -0.42), Vec2(0.95, 2.0)}};
   }
   void step() override { run_.step(); }
 
   void draw(render::Frame& frame) const override {
     frame.caption = "Ch 5 walk-through · " + moment();
     frame.force_scale = 0.05;
-    frame.grounds.push_back({Vec2r::Zero(), Vec2r::UnitY()});
+    frame.grounds.push_back({Vec2::Zero(), Vec2::UnitY()});
     frame.bodies.push_back(view::body_view(box(), run_.world().shape(1), tint(render::palette::sky_blue, 0.35)));
     for (std::size_t i = 0; i < run_.report().contacts().size(); ++i) {
       const ContactInfo c = run_.report().contacts()[i];
       frame.contacts.push_back(view::contact_view(c));
       const bool a = corner_name(i) == "a";
-      frame.labels.push_back({c.point.head<2>() + Vec2r(a ? -0.06 : 0.06, -0.13),
+      frame.labels.push_back({c.point.head<2>() + Vec2(a ? -0.06 : 0.06, -0.13),
                               corner_name(i) + ": λ = " + fixed(c.lambda_normal, 2) + " N",
                               render::palette::ink,
                               a ? render::Label::Align::right : render::Label::Align::left});
@@ -182,21 +181,21 @@ class Walkthrough : public tutorial::Scene {
 
   // Corner `side` (−1: a, +1: b) magnified `magnify` times in a square above the box.
   void draw_inset(render::Frame& frame, double side) const {
-    const Vec2r centre(side * 0.55, 1.52);
+    const Vec2 centre(side * 0.55, 1.52);
     const Vec3 at_corner = box().x + box().rotation * Vec3(side * 0.5, -0.5, 0.0);
-    const Vec2r focus(at_corner.x(), 0.0);  // the ground's surface under the corner
-    auto map = [&](const Vec3& p) { return Vec2r(centre + magnify * (p.head<2>() - focus)); };
-    auto segment = [&](Vec2r a, Vec2r b, render::Colour colour, bool dashed) {
+    const Vec2 focus(at_corner.x(), 0.0);  // the ground's surface under the corner
+    auto map = [&](const Vec3& p) { return Vec2(centre + magnify * (p.head<2>() - focus)); };
+    auto segment = [&](Vec2 a, Vec2 b, render::Colour colour, bool dashed) {
       if (clip(a, b, centre, inset_half)) frame.paths.push_back({{a, b}, colour, dashed});
     };
-    const Vec2r h(inset_half, inset_half), k(inset_half, -inset_half);
+    const Vec2 h(inset_half, inset_half), k(inset_half, -inset_half);
     frame.paths.push_back(
         {{centre - h, centre - k, centre + h, centre + k, centre - h}, render::palette::grey, false});
     segment(map(Vec3(focus.x() - 1.0, 0.0, 0.0)), map(Vec3(focus.x() + 1.0, 0.0, 0.0)),
             render::palette::ink, false);
     for (int i = -4; i <= 4; ++i) {  // the ground's hatching
-      const Vec2r top = centre + Vec2r(0.15 * i, 0.0);
-      segment(top, top + Vec2r(-0.4, -0.4), render::palette::grid, false);
+      const Vec2 top = centre + Vec2(0.15 * i, 0.0);
+      segment(top, top + Vec2(-0.4, -0.4), render::palette::grid, false);
     }
     for (int i = 0; i < 4; ++i) {
       const Vec3 r0(i == 0 || i == 3 ? -0.5 : 0.5, i < 2 ? -0.5 : 0.5, 0.0);
@@ -208,10 +207,10 @@ class Walkthrough : public tutorial::Scene {
     if (const int i = contact_at(side); i >= 0) {
       const ContactInfo contact = run_.report().contacts()[static_cast<std::size_t>(i)];
       const ContactInfo* c = &contact;
-      const Vec2r at = map(c->point);
-      frame.paths.push_back({{at + Vec2r(-0.03, 0.0), at + Vec2r(0.03, 0.0)},
+      const Vec2 at = map(c->point);
+      frame.paths.push_back({{at + Vec2(-0.03, 0.0), at + Vec2(0.03, 0.0)},
                              render::palette::vermillion, false});
-      frame.paths.push_back({{at + Vec2r(0.0, -0.03), at + Vec2r(0.0, 0.03)},
+      frame.paths.push_back({{at + Vec2(0.0, -0.03), at + Vec2(0.0, 0.03)},
                              render::palette::vermillion, false});
       text = "ε = " + fixed(std::min(c->separation, 0.0), 4) + " m" +
              (c->cached ? " (cached)" : " (fresh)");
@@ -220,11 +219,11 @@ class Walkthrough : public tutorial::Scene {
     } else {
       text = "no contact";
     }
-    frame.labels.push_back({centre + Vec2r(0.0, inset_half + 0.08),
+    frame.labels.push_back({centre + Vec2(0.0, inset_half + 0.08),
                             std::string(side < 0.0 ? "corner a" : "corner b") + " ×" +
                                 fixed(magnify, 0),
                             render::palette::ink, render::Label::Align::centre});
-    frame.labels.push_back({centre - Vec2r(0.0, inset_half + 0.08), text, render::palette::ink,
+    frame.labels.push_back({centre - Vec2(0.0, inset_half + 0.08), text, render::palette::ink,
                             render::Label::Align::centre});
   }
 

@@ -13,9 +13,6 @@
 
 namespace lamina {
 
-using Vec2 = Eigen::Vector2d;  // a vector in the x–y plane, in m (or unit, for normals)
-using Mat2 = Eigen::Matrix2d;  // a rotation in the plane
-
 // The pose of a body in the plane: the x–y parts of its x and R.
 struct Pose2 {
   Vec2 x = Vec2::Zero();          // centre of mass, world frame, in m

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "kinematics/math_types.h"
 #include "render/colour.h"
 #include "render/overlay.h"
 
 namespace lamina::render {
 
-using Vec2 = Eigen::Vector2d;  // a point or vector in the plane (metres, or pixels on screen)
 
 // A rigid body's outline: a box or a circle, with a mark that shows its rotation.
 struct Body {

@@ -23,7 +23,7 @@ BodyDescription ground(double half_width = 20.0) {
   return g;
 }
 
-BodyDescription box(const std::string& name, Vec2d position, Vec2d half_extents = {half, half},
+BodyDescription box(const std::string& name, Vec2 position, Vec2 half_extents = {half, half},
                     double angle = 0.0) {
   BodyDescription b;
   b.name = name;
@@ -41,7 +41,7 @@ Scene with(std::vector<BodyDescription> bodies, std::vector<JointDescription> jo
   return s;
 }
 
-JointDescription revolute(const std::string& a, const std::string& b, Vec2d anchor) {
+JointDescription revolute(const std::string& a, const std::string& b, Vec2 anchor) {
   JointDescription j;
   j.type = JointType::revolute;
   j.bodies = {a, b};
@@ -75,7 +75,7 @@ Scene pendulum() {
   JointDescription rod;
   rod.type = JointType::distance;
   rod.bodies = {"pivot", "bob"};
-  rod.anchors = {Vec2d{0.0, 3.0}, Vec2d{2.0, 3.0}};
+  rod.anchors = {Vec2{0.0, 3.0}, Vec2{2.0, 3.0}};
   return with({pivot, bob}, {rod});
 }
 

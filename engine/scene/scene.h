@@ -9,28 +9,29 @@
 #include <string>
 #include <vector>
 
-namespace lamina {
+#include "constraints/step_settings.h"
+#include "kinematics/math_types.h"
 
-using Vec2d = std::array<double, 2>;  // a planar vector (x, y)
+namespace lamina {
 
 enum class ShapeType { box, circle };
 
 struct ShapeDescription {
   ShapeType type = ShapeType::box;
-  Vec2d half_extents{0.5, 0.5};  // a box's half width and half height, in m
+  Vec2 half_extents{0.5, 0.5};  // a box's half width and half height, in m
   double radius = 0.5;           // a circle's radius, in m
 };
 
 struct BodyDescription {
   std::string name;                  // unique within the scene; joints refer to it
   ShapeDescription shape;
-  Vec2d position{0.0, 0.0};          // centre of mass, in m
+  Vec2 position{0.0, 0.0};          // centre of mass, in m
   double angle = 0.0;                // about z, in rad
   bool is_static = false;            // a static body never moves (zero inverse mass, eq. 5-1)
   double density = 1.0;              // kg/m² over the shape's area (1 m deep), dynamic bodies only
   double friction = 0.6;             // μ; two bodies combine as √(μ1 μ2)
   double restitution = 0.0;          // e in [0, 1]; two bodies combine as the max
-  Vec2d velocity{0.0, 0.0};          // v, in m/s
+  Vec2 velocity{0.0, 0.0};          // v, in m/s
   double angular_velocity = 0.0;     // ω about z, in rad/s
 };
 
@@ -39,17 +40,14 @@ enum class JointType { revolute, distance };
 struct JointDescription {
   JointType type = JointType::revolute;
   std::array<std::string, 2> bodies;  // the two bodies' names
-  Vec2d anchor{0.0, 0.0};             // revolute: the pin, world frame, in m
-  std::array<Vec2d, 2> anchors{};     // distance: the rod's end on each body, world frame, in m
+  Vec2 anchor{0.0, 0.0};             // revolute: the pin, world frame, in m
+  std::array<Vec2, 2> anchors{};     // distance: the rod's end on each body, world frame, in m
 };
 
 struct Scene {
   std::string name = "scene";
   std::string description;           // one line, shown by `lamina scenes`
-  Vec2d gravity{0.0, -9.8};          // in m/s²
-  double dt = 1.0 / 60.0;            // Δt, in s
-  int iterations = 10;               // PGS sweeps per step
-  double beta = 0.2;                 // β of the position bias (eq. 3-14, 4-4)
+  StepSettings step;                 // g (in the plane), Δt, β and the PGS sweeps per step
   int steps = 600;                   // how many steps `lamina run` takes unless told
   std::vector<BodyDescription> bodies;
   std::vector<JointDescription> joints;

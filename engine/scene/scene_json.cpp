@@ -90,7 +90,7 @@ class Reader {
   }
 
   // A vector whose components each lie in the range.
-  Vec2d vec2(const json& j, const std::string& path, Range<double> range) const {
+  Vec2 vec2(const json& j, const std::string& path, Range<double> range) const {
     array(j, path, 2);
     return {in_range(j[0], at(path, 0), range), in_range(j[1], at(path, 1), range)};
   }
@@ -283,10 +283,12 @@ Scene read_scene(const Reader& r, const json& j) {
   Scene scene;
   optional(r, j, "", "name", scene.name, &Reader::text);
   optional(r, j, "", "description", scene.description, &Reader::text);
-  optional(r, j, "", "gravity", scene.gravity, &Reader::vec2, scene_limits::gravity);
-  optional(r, j, "", "dt", scene.dt, &Reader::in_range, scene_limits::dt);
-  optional(r, j, "", "iterations", scene.iterations, &Reader::count, scene_limits::iterations);
-  optional(r, j, "", "beta", scene.beta, &Reader::in_range, scene_limits::beta);
+  Vec2 gravity = scene.step.gravity.head<2>();
+  optional(r, j, "", "gravity", gravity, &Reader::vec2, scene_limits::gravity);
+  scene.step.gravity = Vec3(gravity.x(), gravity.y(), 0.0);
+  optional(r, j, "", "dt", scene.step.dt, &Reader::in_range, scene_limits::dt);
+  optional(r, j, "", "iterations", scene.step.iterations, &Reader::count, scene_limits::iterations);
+  optional(r, j, "", "beta", scene.step.beta, &Reader::in_range, scene_limits::beta);
   optional(r, j, "", "steps", scene.steps, &Reader::count, scene_limits::steps);
   const json& bodies = r.array(r.required(j, "", "bodies"), "bodies", 0);
   std::set<std::string> names;  // every body so far
@@ -309,7 +311,7 @@ Scene read_scene(const Reader& r, const json& j) {
 // Scene files are written with their keys in a fixed order (name first), laid out to be edited.
 using ordered_json = nlohmann::ordered_json;
 
-ordered_json vec2_json(const Vec2d& v) { return ordered_json::array({v[0], v[1]}); }
+ordered_json vec2_json(const Vec2& v) { return ordered_json::array({v[0], v[1]}); }
 
 ordered_json shape_json(const ShapeDescription& shape) {
   if (shape.type == ShapeType::circle) return {{"type", "circle"}, {"radius", shape.radius}};
@@ -368,8 +370,9 @@ Scene read_scene_file(const std::string& path) {
 
 std::string scene_to_json(const Scene& scene) {
   ordered_json j = {{"name", scene.name}, {"description", scene.description},
-                    {"gravity", vec2_json(scene.gravity)}, {"dt", scene.dt},
-                    {"iterations", scene.iterations}, {"beta", scene.beta}, {"steps", scene.steps},
+                    {"gravity", vec2_json(scene.step.gravity.head<2>())}, {"dt", scene.step.dt},
+                    {"iterations", scene.step.iterations}, {"beta", scene.step.beta},
+                    {"steps", scene.steps},
                     {"bodies", ordered_json::array()}, {"joints", ordered_json::array()}};
   for (const BodyDescription& body : scene.bodies) j["bodies"].push_back(body_json(body));
   for (const JointDescription& joint : scene.joints) j["joints"].push_back(joint_json(joint));

@@ -11,7 +11,7 @@
 namespace lamina {
 namespace {
 
-Vec3 planar(const Vec2d& v) { return Vec3(v[0], v[1], 0.0); }
+Vec3 planar(const Vec2& v) { return Vec3(v.x(), v.y(), 0.0); }
 
 int add_body(World& world, const BodyDescription& desc) {
   const Material material{desc.friction, desc.restitution};
@@ -56,10 +56,7 @@ auto at_path(const std::string& path, Add&& add) {
 
 WorldSettings world_settings(const Scene& scene) {
   WorldSettings settings;
-  settings.step.gravity = planar(scene.gravity);
-  settings.step.dt = scene.dt;
-  settings.step.iterations = scene.iterations;
-  settings.step.beta = scene.beta;
+  settings.step = scene.step;
   return settings;
 }
 

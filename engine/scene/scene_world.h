@@ -6,7 +6,8 @@
 
 namespace lamina {
 
-// The world settings a scene asks for (gravity, Δt, iterations, β); the rest are the defaults.
+// The world settings a scene asks for (its StepSettings: g, Δt, β, sweeps); the rest are the
+// defaults.
 WorldSettings world_settings(const Scene& scene);
 
 // The scene's bodies, in order (World body i is scene.bodies[i]), with their shapes, materials,

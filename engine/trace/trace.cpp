@@ -5,7 +5,7 @@
 namespace lamina {
 namespace {
 
-Vec2d plane(const Vec3& v) { return {v.x(), v.y()}; }
+Vec2 plane(const Vec3& v) { return {v.x(), v.y()}; }
 
 BodyState body_state(const std::string& name, const RigidBody& body) {
   return {name, plane(body.x), planar_angle(body.q), plane(body.v), body.angular_velocity.z()};

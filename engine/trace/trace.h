@@ -17,16 +17,16 @@ namespace lamina {
 
 struct BodyState {
   std::string name;               // the scene's name for the body
-  Vec2d position{0.0, 0.0};       // centre of mass x, in m
+  Vec2 position{0.0, 0.0};       // centre of mass x, in m
   double angle = 0.0;             // θ about z, in rad, in (−π, π]
-  Vec2d velocity{0.0, 0.0};       // v, in m/s
+  Vec2 velocity{0.0, 0.0};       // v, in m/s
   double angular_velocity = 0.0;  // ω about z, in rad/s
 };
 
 struct ContactState {
   std::array<std::string, 2> bodies;  // the two bodies' names, first then second
-  Vec2d point{0.0, 0.0};              // c, midway between the surfaces, in m
-  Vec2d normal{0.0, 1.0};             // n, unit, from the first body to the second
+  Vec2 point{0.0, 0.0};              // c, midway between the surfaces, in m
+  Vec2 normal{0.0, 1.0};             // n, unit, from the first body to the second
   double depth = 0.0;                 // −C of eq. 4-1, in m (negative: apart, kept by the cache)
   double normal_impulse = 0.0;        // λ Δt of the contact row, in N·s
   double tangent_impulse = 0.0;       // λ Δt of the friction row along u1 = z × n, in N·s

@@ -34,7 +34,7 @@ class LineWriter {
       out_ += "null";
     }
   }
-  void vec2(const Vec2d& v) {
+  void vec2(const Vec2& v) {
     out_ += '[';
     number(v[0]);
     out_ += ',';
@@ -85,13 +85,16 @@ void write_list(LineWriter& w, const char* key, const std::vector<Item>& items, 
   w.raw("]");
 }
 
+Vec2 vec2_of(const Json& j) { return Vec2(j.at(0).get<double>(), j.at(1).get<double>()); }
+
 BodyState body_state(const Json& j) {
-  return {j.at("name"), j.at("position"), j.at("angle"), j.at("velocity"), j.at("angular_velocity")};
+  return {j.at("name"), vec2_of(j.at("position")), j.at("angle"), vec2_of(j.at("velocity")),
+          j.at("angular_velocity")};
 }
 
 ContactState contact_state(const Json& j) {
-  return {j.at("bodies"), j.at("point"), j.at("normal"), j.at("depth"), j.at("normal_impulse"),
-          j.at("tangent_impulse"), j.at("cached")};
+  return {j.at("bodies"), vec2_of(j.at("point")), vec2_of(j.at("normal")), j.at("depth"),
+          j.at("normal_impulse"), j.at("tangent_impulse"), j.at("cached")};
 }
 
 }  // namespace

@@ -14,7 +14,7 @@ using namespace lamina;
 
 constexpr int columns = 21, rows = 10;       // 210 boxes
 constexpr double spacing = 0.6;              // between box centres, in m
-const render::Vec2 half_extents(0.2, 0.14);  // in m
+const Vec2 half_extents(0.2, 0.14);  // in m
 const Vec3 gravity(0.0, -9.8, 0.0);
 
 class ThrownBoxes : public tutorial::Scene {
@@ -33,7 +33,7 @@ class ThrownBoxes : public tutorial::Scene {
 
   tutorial::SceneInfo info() const override {
     return {
-        "thrown_boxes", 1.0 / 60.0, 120, 1, {render::Vec2(-1.0, -1.0), render::Vec2(13.0, 11.0)}};
+        "thrown_boxes", 1.0 / 60.0, 120, 1, {Vec2(-1.0, -1.0), Vec2(13.0, 11.0)}};
   }
 
   void step() override { step_unconstrained(bodies_, gravity, 1.0 / 60.0); }

@@ -76,7 +76,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   std::optional<lamina::World> world = build(scene);
   if (!world) return 0;
-  if (scene.bodies.size() > max_stepped_bodies || scene.iterations > max_stepped_iterations) {
+  if (scene.bodies.size() > max_stepped_bodies || scene.step.iterations > max_stepped_iterations) {
     return 0;  // parsed and built, too big to step within -timeout
   }
 

@@ -6,7 +6,7 @@
 namespace lamina {
 namespace {
 
-b2Vec2 to_b2(const Vec2d& v) { return b2Vec2(static_cast<float>(v[0]), static_cast<float>(v[1])); }
+b2Vec2 to_b2(const Vec2& v) { return b2Vec2(static_cast<float>(v[0]), static_cast<float>(v[1])); }
 
 b2Body* add_body(b2World& world, const BodyDescription& desc) {
   b2BodyDef def;
@@ -52,8 +52,8 @@ void add_joint(b2World& world, const JointDescription& desc, b2Body* a, b2Body* 
 Box2dScene make_box2d_scene(const Scene& scene, const Box2dSettings& settings) {
   Box2dScene out;
   out.settings = settings;
-  out.dt = static_cast<float>(scene.dt);
-  out.world = std::make_unique<b2World>(to_b2(scene.gravity));
+  out.dt = static_cast<float>(scene.step.dt);
+  out.world = std::make_unique<b2World>(to_b2(scene.step.gravity.head<2>()));
   out.world->SetContinuousPhysics(false);
   out.world->SetAllowSleeping(settings.allow_sleeping);
   std::map<std::string, b2Body*> by_name;

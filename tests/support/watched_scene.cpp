@@ -70,7 +70,7 @@ void require_sound(Watch& watch, double seconds) {
   REQUIRE(sound);
 }
 
-BodyDescription box(const std::string& name, Vec2d position, Vec2d half_extents) {
+BodyDescription box(const std::string& name, Vec2 position, Vec2 half_extents) {
   BodyDescription b;
   b.name = name;
   b.position = position;
@@ -78,7 +78,7 @@ BodyDescription box(const std::string& name, Vec2d position, Vec2d half_extents)
   return b;
 }
 
-BodyDescription circle(const std::string& name, Vec2d position, double radius) {
+BodyDescription circle(const std::string& name, Vec2 position, double radius) {
   BodyDescription b;
   b.name = name;
   b.position = position;
@@ -95,8 +95,8 @@ BodyDescription ground() {
 
 Scene stack(int count, double dt, int iterations) {
   Scene s;
-  s.dt = dt;
-  s.iterations = iterations;
+  s.step.dt = dt;
+  s.step.iterations = iterations;
   s.bodies = {ground()};
   for (int i = 0; i < count; ++i) {
     s.bodies.push_back(box("box" + std::to_string(i), {0.0, 0.5 + i}));

@@ -37,8 +37,8 @@ struct Watch {
 void require_sound(Watch& watch, double seconds);
 
 // A dynamic box (unit half extents unless given) and a dynamic disc, named, at a position.
-BodyDescription box(const std::string& name, Vec2d position, Vec2d half_extents = {0.5, 0.5});
-BodyDescription circle(const std::string& name, Vec2d position, double radius);
+BodyDescription box(const std::string& name, Vec2 position, Vec2 half_extents = {0.5, 0.5});
+BodyDescription circle(const std::string& name, Vec2 position, double radius);
 
 // The ground, a static box 40 m × 1 m whose top is y = 0.
 BodyDescription ground();

@@ -15,7 +15,6 @@
 
 namespace lamina::ch3 {
 
-using Vec2 = render::Vec2;
 using render::palette::blue;
 using render::palette::bluish_green;
 using render::palette::grey;

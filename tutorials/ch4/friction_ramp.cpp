@@ -12,7 +12,6 @@ namespace lamina::ch4 {
 namespace {
 
 using tutorial::fixed;
-using Vec2r = render::Vec2;
 
 constexpr double dt = 1.0 / 60.0;  // Δt, in s (WorldSettings' default)
 constexpr double g = 9.8;          // |g|, in m/s²
@@ -31,14 +30,14 @@ class FrictionRamp : public tutorial::Scene {
   static constexpr double half_length = 2.6; // ramp half length, in m
   static constexpr double half_thickness = 0.15;
   static constexpr double start = 1.6;       // the box's start up the slope from the centre, in m
-  inline static const Vec2r box_half{0.35, 0.25};
+  inline static const Vec2 box_half{0.35, 0.25};
 
   explicit FrictionRamp(const tutorial::Options& o) : world_(ramps_world(!o.no_cache)) {
     world_.step();
   }
 
   tutorial::SceneInfo info() const override {
-    return {"friction_ramp", dt, 90, 1, {Vec2r(-6.4, -2.3), Vec2r(6.4, 3.2)}};
+    return {"friction_ramp", dt, 90, 1, {Vec2(-6.4, -2.3), Vec2(6.4, 3.2)}};
   }
   void step() override { world_.step(); }
 

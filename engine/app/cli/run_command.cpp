@@ -16,9 +16,9 @@ namespace lamina::cli {
 namespace {
 
 WorldSettings run_settings(const RunOptions& o, Scene& scene) {
-  if (o.dt) scene.dt = *o.dt;
-  if (o.iterations) scene.iterations = *o.iterations;
-  if (o.beta) scene.beta = *o.beta;
+  if (o.dt) scene.step.dt = *o.dt;
+  if (o.iterations) scene.step.iterations = *o.iterations;
+  if (o.beta) scene.step.beta = *o.beta;
   WorldSettings settings = world_settings(scene);
   settings.cache.enabled = !o.no_cache;
   return settings;

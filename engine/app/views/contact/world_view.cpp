@@ -22,7 +22,7 @@ render::Contact contact_view(const ContactInfo& c) {
   render::Contact view;
   view.point = c.point.head<2>();
   view.normal = c.normal.head<2>();
-  view.tangent = render::Vec2(-c.normal.y(), c.normal.x());
+  view.tangent = Vec2(-c.normal.y(), c.normal.x());
   view.normal_force = c.lambda_normal;
   view.friction_force = c.lambda_tangent;
   view.cached = c.cached;

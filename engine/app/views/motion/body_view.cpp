@@ -2,7 +2,7 @@
 
 namespace lamina::view {
 
-render::Body box_view(const RigidBody& body, const render::Vec2& half_extents, render::Colour fill) {
+render::Body box_view(const RigidBody& body, const Vec2& half_extents, render::Colour fill) {
   render::Body view;
   view.shape = render::Body::Shape::box;
   view.centre = body.x.head<2>();

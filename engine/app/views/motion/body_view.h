@@ -8,6 +8,6 @@
 namespace lamina::view {
 
 // A box of the given half extents at the body's pose.
-render::Body box_view(const RigidBody& body, const render::Vec2& half_extents, render::Colour fill);
+render::Body box_view(const RigidBody& body, const Vec2& half_extents, render::Colour fill);
 
 }  // namespace lamina::view
