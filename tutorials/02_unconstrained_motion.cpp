@@ -33,8 +33,16 @@ struct Run {
   const char* rule;  // how x moves, as the panel states it
   render::Colour colour;
   Vec3 origin;  // where this panel's throw starts
-  std::vector<RigidBody> bodies;
-  std::vector<Vec2> trail;
+  std::vector<RigidBody> bodies;  // after step k: at t + Δt
+  std::vector<RigidBody> at_t;    // the bodies at t, where step k started (what a frame shows)
+  std::vector<Vec2> trail;        // the centre's path up to t
+
+  // Takes step k + 1 (eq. 2-1..2-8 with F = m g); the trail gains the centre at its t.
+  void step() {
+    at_t = bodies;
+    step_unconstrained(bodies, gravity, dt, scheme);
+    trail.push_back(at_t[0].x.head<2>());
+  }
 };
 
 double total_energy(const RigidBody& b) {
@@ -53,7 +61,9 @@ Run make_run(Integration scheme, const char* title, const char* rule, render::Co
   RigidBody box = box_body(density, half_extents.x(), half_extents.y(), origin);
   box.v = throw_velocity;
   box.angular_velocity = Vec3(0.0, 0.0, throw_spin);
-  return {scheme, title, rule, colour, origin, {box}, {origin.head<2>()}};
+  Run run{scheme, title, rule, colour, origin, {box}, {}, {}};
+  run.step();  // step 0: a frame shows the state at t with what its step did from it
+  return run;
 }
 
 class ThrownBox : public tutorial::Scene {
@@ -64,7 +74,7 @@ class ThrownBox : public tutorial::Scene {
               make_run(Integration::semi_implicit, "semi-implicit Euler (eq. 2-5)",
                        "x(t+Δt) = x + v(t+Δt) Δt", render::palette::bluish_green,
                        launch + Vec3(panel_offset, 0.0, 0.0))},
-        initial_energy_(total_energy(runs_[0].bodies[0])) {
+        initial_energy_(total_energy(runs_[0].at_t[0])) {
     record_energy();
   }
 
@@ -74,11 +84,7 @@ class ThrownBox : public tutorial::Scene {
 
   void step() override {
     ++step_;
-    for (Run& run : runs_) {
-      // eq. 2-1..2-8 with F = m g
-      step_unconstrained(run.bodies, gravity, dt, run.scheme);
-      run.trail.push_back(run.bodies[0].x.head<2>());
-    }
+    for (Run& run : runs_) run.step();
     record_energy();
   }
 
@@ -90,7 +96,7 @@ class ThrownBox : public tutorial::Scene {
       frame.paths.push_back({exact_path(run.origin), render::palette::grey, true});
       frame.paths.push_back({run.trail, run.colour, false});
       frame.bodies.push_back(
-          view::box_view(run.bodies[0], half_extents, tint(run.colour, 0.35)));
+          view::box_view(run.at_t[0], half_extents, tint(run.colour, 0.35)));
       frame.panels.push_back(run_panel(run, t));
     }
     const double divider = launch.x() + panel_offset - 1.3;
@@ -124,8 +130,8 @@ class ThrownBox : public tutorial::Scene {
 
  private:
   void record_energy() {
-    energy_rows_.push_back({step_ * dt, total_energy(runs_[0].bodies[0]),
-                            total_energy(runs_[1].bodies[0]), initial_energy_});
+    energy_rows_.push_back({step_ * dt, total_energy(runs_[0].at_t[0]),
+                            total_energy(runs_[1].at_t[0]), initial_energy_});
   }
 
   std::vector<Vec2> exact_path(const Vec3& origin) const {
@@ -136,7 +142,7 @@ class ThrownBox : public tutorial::Scene {
   }
 
   render::Panel run_panel(const Run& run, double t) const {
-    const RigidBody& b = run.bodies[0];
+    const RigidBody& b = run.at_t[0];
     const double drift = total_energy(b) - initial_energy_;
     // Under constant g each step changes E by ±½ m g² Δt², so E drifts by ±½ m g² Δt t.
     const double predicted = 0.5 * b.mass * gravity.squaredNorm() * dt * t;
@@ -154,12 +160,17 @@ class ThrownBox : public tutorial::Scene {
     return panel;
   }
 
+  // Step k: the state at t, then each of eq. 2-3..2-8 at t + Δt.
   tutorial::Section explain_run(const Run& run) const {
+    const RigidBody& a = run.at_t[0];
     const RigidBody& b = run.bodies[0];
     using tutorial::json_of;
     return {
         run.title,
-        {{"F", "5-2", "external force m g, the only force", json_of(Vec3(b.mass * gravity)), "N"},
+        {{"x(t)", "", "centre of mass at t", json_of(a.x), "m"},
+         {"v(t)", "", "velocity at t", json_of(a.v), "m/s"},
+         {"ω(t)", "", "angular velocity at t", json_of(a.angular_velocity), "rad/s"},
+         {"F", "5-2", "external force m g, the only force", json_of(Vec3(b.mass * gravity)), "N"},
          {"v(t+Δt)", "2-3", "v + m⁻¹ F Δt", json_of(b.v), "m/s"},
          {"ω(t+Δt)", "2-4", "ω + I⁻¹ τ Δt (τ = 0)", json_of(b.angular_velocity), "rad/s"},
          {"x(t+Δt)", "2-5", run.rule, json_of(b.x), "m"},
@@ -170,7 +181,7 @@ class ThrownBox : public tutorial::Scene {
   }
 
   std::array<Run, 2> runs_;
-  double initial_energy_;
+  double initial_energy_;  // E at t = 0
   long step_ = 0;
   std::vector<std::vector<double>> energy_rows_;  // t, E explicit, E semi-implicit, E exact
 };

@@ -29,8 +29,8 @@ namespace {
 using namespace lamina;
 using tutorial::fixed;
 
-constexpr double dt = 1.0 / 60.0;       // Δt, in s (the scenes' default)
-constexpr double g = 9.8;               // |g|, in m/s²
+const double dt = StepSettings().dt;             // Δt, in s (every scene's default)
+const double g = -StepSettings().gravity.y();    // |g|, in m/s²
 constexpr double force_scale = 0.1;     // arrow length per λ, in m per N
 constexpr double longest_force = 16.0;  // forces above this (landing impacts) are drawn cut, in N
 constexpr double at_rest = 1e-2;        // |v| (m/s) and |ω| (rad/s) below this count as resting

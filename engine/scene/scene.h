@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "constraints/step_settings.h"
+#include "contact/shape.h"
 #include "kinematics/math_types.h"
 
 namespace lamina {
@@ -29,8 +30,8 @@ struct BodyDescription {
   double angle = 0.0;                // about z, in rad
   bool is_static = false;            // a static body never moves (zero inverse mass, eq. 5-1)
   double density = 1.0;              // kg/m² over the shape's area (1 m deep), dynamic bodies only
-  double friction = 0.6;             // μ; two bodies combine as √(μ1 μ2)
-  double restitution = 0.0;          // e in [0, 1]; two bodies combine as the max
+  double friction = Material().friction;        // μ; two bodies combine as √(μ1 μ2)
+  double restitution = Material().restitution;  // e in [0, 1]; two bodies combine as the max
   Vec2 velocity{0.0, 0.0};          // v, in m/s
   double angular_velocity = 0.0;     // ω about z, in rad/s
 };

@@ -3,8 +3,9 @@
 // docs/scene-format.md lists them; `lamina run`'s --dt, --iterations, --beta and --steps take the
 // same ranges. Each range is far wider than a lecture needs. Its ends are where, measured, a
 // result stops meaning anything or stops being a finite number; the reason stands beside each.
-// tests/test_numerical_guards.cpp runs scenes at the ends and checks that every state stays
-// finite. Figures measured with the Release build (-O2) on one core.
+// tests/test_extreme_scenes.cpp runs scenes at the ends and checks that every state stays
+// finite; tests/test_refused_input.cpp checks that a value just past an end is refused. Figures
+// measured with the Release build (-O2) on one core.
 #pragma once
 
 namespace lamina::scene_limits {

@@ -34,7 +34,7 @@ struct ContactState {
 };
 
 struct TraceStep {
-  long step = 0;                      // steps taken since the start
+  long step = 0;                      // k: step k went from t = k Δt to t + Δt (from 0)
   double time = 0.0;                  // t after the step, in s
   std::vector<BodyState> bodies;      // dynamic bodies, in the scene's order
   std::vector<ContactState> contacts; // in the order the solver took them

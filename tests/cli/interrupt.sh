@@ -41,11 +41,11 @@ wait_while() {
   done
 }
 
-# True until lamina has written something (view: made the trace's temporary); fails when lamina
+# True until lamina has written something (recording: made the trace's temporary); fails when lamina
 # has ended.
 not_written() {
   finished $pid && fail "lamina ended before it was signalled"
-  ! { [ -e "$written" ] && { [ "$mode" = view ] || [ -s "$written" ]; }; }
+  ! { [ -e "$written" ] && { [ "$mode" = recording ] || [ -s "$written" ]; }; }
 }
 
 # True while the file still has the size $2; fails when lamina has ended.
@@ -129,19 +129,21 @@ rm "$folder/stdout"
 stderr=$(cat "$folder/stderr")
 rm "$folder/stderr"
 
-steps=$(echo "$stderr" | sed -n "s/^lamina: $scene: $what after \([0-9][0-9]*\) steps[;,].*/\1/p")
+steps=$(echo "$stderr" | sed -n "s/^lamina: $scene: $what after \([0-9][0-9]*\) steps\{0,1\}[;,].*/\1/p")
 [ -n "$steps" ] || fail "stderr does not say how many steps were taken: $stderr"
 [ "$mode" = recording ] || [ "$steps" -ge 1 ] || fail "stopped before its first step: $stderr"
+noun=steps
+[ "$steps" -eq 1 ] && noun=step
 held="steps 0..$((steps - 1))"
 [ "$steps" -eq 0 ] && held="no steps"
 case $mode in
-  trace) expected="lamina: $scene: $what after $steps steps; trace -> $trace holds $held" ;;
+  trace) expected="lamina: $scene: $what after $steps $noun; trace -> $trace holds $held" ;;
   recording)
-    expected="lamina: $scene: $what after $steps steps; trace -> $trace holds $held, no frames (stopped before rendering)" ;;
+    expected="lamina: $scene: $what after $steps $noun; trace -> $trace holds $held, no frames (stopped before rendering)" ;;
   frames)
     count=$(echo "$stderr" | sed -n "s/.* while rendering frame \([0-9][0-9]*\);.*/\1/p")
     [ -n "$count" ] && [ "$count" -ge 1 ] || fail "stderr does not name a frame after the first: $stderr"
-    expected="lamina: $scene: $what after $steps steps, while rendering frame $count; trace -> $trace holds $held, $count frames -> $frames" ;;
+    expected="lamina: $scene: $what after $steps $noun, while rendering frame $count; trace -> $trace holds $held, $count frames -> $frames" ;;
 esac
 [ "$stderr" = "$expected" ] || fail "stderr: $stderr
 expected: $expected"

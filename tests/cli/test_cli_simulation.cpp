@@ -185,7 +185,7 @@ TEST_SUITE("LaminaRun") {
     const ScratchFolder scratch("cli-diverge-first");
     RunOptions options;
     options.scene = "heavy.json";
-    options.steps = 10000000;  // the most: fitting the view stops where the run diverges too
+    options.steps = 10000000;  // the most: the run stops at the step that diverges
     options.trace = scratch.path() / "trace.jsonl";
     options.frames = scratch.path() / "frames";
     options.render.size = {64, 36};

@@ -25,7 +25,7 @@ using render::palette::vermillion;
 using tutorial::fixed;
 using tutorial::scientific;
 
-const Vec3 gravity(0.0, -9.8, 0.0);  // g, in m/s²
+const Vec3 gravity = StepSettings().gravity;  // g, in m/s² (what constrained_step applies)
 
 inline Vec2 planar(const Vec3& v) { return v.head<2>(); }
 inline Vec3 spatial(const Vec2& v) { return Vec3(v.x(), v.y(), 0.0); }

@@ -13,8 +13,8 @@ namespace {
 
 using tutorial::fixed;
 
-constexpr double dt = 1.0 / 60.0;  // Δt, in s (WorldSettings' default)
-constexpr double g = 9.8;          // |g|, in m/s²
+const double dt = StepSettings().dt;           // Δt, in s (the World's default)
+const double g = -StepSettings().gravity.y();  // |g|, in m/s²
 
 // A box on a ramp of angle θ: it sticks when tan θ < μ and slides at g (sin θ − μ cos θ) else.
 struct Ramp {

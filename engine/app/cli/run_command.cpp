@@ -9,6 +9,7 @@
 #include "app/cli/scene_source.h"
 #include "app/cli/signals.h"
 #include "app/cli/simulation.h"
+#include "app/harness/format.h"
 #include "app/views/contact/world_explanation.h"
 #include "scene/scene_world.h"
 
@@ -87,8 +88,8 @@ void render_recording(const Simulation& simulation, const FrameRecording& record
                       if (next == recording.frames().size()) return false;
                       if (const int signal = stop_signal()) {
                         throw stopped_by(signal, simulation.origin(),
-                                         "after " + std::to_string(simulation.steps_taken()) +
-                                             " steps, while rendering frame " + std::to_string(next));
+                                         "after " + tutorial::counted(simulation.steps_taken(), "step", "steps") +
+                                             ", while rendering frame " + std::to_string(next));
                       }
                       frame = recording.frames()[next].frame;
                       step = recording.frames()[next++].step;
@@ -116,12 +117,17 @@ std::string step_span(long taken) {
   return taken > 0 ? "steps 0.." + std::to_string(taken - 1) : "no steps";
 }
 
+// "12 frames -> out"
+std::string frames_kept(int count, const RunOptions& o) {
+  return tutorial::counted(count, "frame", "frames") + " -> " + o.frames->string();
+}
+
 void print_summary(const Simulation& simulation, const std::optional<TraceWriter>& trace,
                    const RunOptions& o, int frames) {
-  std::cout << simulation.scene().name << ": " << simulation.steps_taken() << " steps, t = "
+  std::cout << simulation.scene().name << ": " << tutorial::counted(simulation.steps_taken(), "step", "steps") << ", t = "
             << simulation.world().time() << " s";
   if (trace) std::cout << ", trace -> " << listed(trace->paths());
-  if (o.frames) std::cout << ", " << frames << (frames == 1 ? " frame -> " : " frames -> ") << o.frames->string();
+  if (o.frames) std::cout << ", " << frames_kept(frames, o);
   std::cout << '\n';
 }
 
@@ -133,10 +139,6 @@ std::string kept_outputs(const Simulation& simulation, const RunOptions& o,
   if (trace) kept += "; trace -> " + listed(trace->paths()) + " holds " + step_span(simulation.steps_taken());
   if (o.frames) kept += (trace ? ", " : "; ") + frames;
   return kept;
-}
-
-std::string frames_kept(int count, const RunOptions& o) {
-  return std::to_string(count) + (count == 1 ? " frame -> " : " frames -> ") + o.frames->string();
 }
 
 }  // namespace

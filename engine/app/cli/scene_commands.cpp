@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/cli/scene_source.h"
+#include "app/harness/format.h"
 #include "app/cli/simulation.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_json.h"
@@ -26,10 +27,6 @@ void list_scenes() {
 
 namespace {
 
-// "1 joint", "3 joints".
-std::string counted(std::size_t count, const char* one, const char* many) {
-  return std::to_string(count) + " " + (count == 1 ? one : many);
-}
 
 }  // namespace
 
@@ -38,8 +35,8 @@ void show_scene(const std::string& source) { std::cout << scene_to_json(load_sce
 void check_scene(const std::string& source) {
   const Scene scene = load_scene(source);
   checked_world(scene, world_settings(scene), source);
-  std::cout << source << ": ok, " << counted(scene.bodies.size(), "body", "bodies") << ", "
-            << counted(scene.joints.size(), "joint", "joints") << "\n";
+  std::cout << source << ": ok, " << tutorial::counted(static_cast<long>(scene.bodies.size()), "body", "bodies") << ", "
+            << tutorial::counted(static_cast<long>(scene.joints.size()), "joint", "joints") << "\n";
 }
 
 }  // namespace lamina::cli

@@ -2,6 +2,7 @@
 
 #include "app/cli/exit_codes.h"
 #include "app/cli/signals.h"
+#include "app/harness/format.h"
 #include "scene/scene_world.h"
 #include "scene/shortest_number.h"
 #include "trace/trace.h"
@@ -49,7 +50,7 @@ std::vector<std::string> Simulation::body_names() const {
 
 void Simulation::step(WorldReport* report) {
   if (const int signal = stop_signal()) {
-    throw stopped_by(signal, origin_, "after " + std::to_string(steps_taken_) + " steps");
+    throw stopped_by(signal, origin_, "after " + tutorial::counted(steps_taken_, "step", "steps"));
   }
   if (report != nullptr) {
     world_.step(*report);

@@ -35,4 +35,8 @@ std::vector<std::string> fixed_rows(const Mat3& m, int decimals) {
   return rows;
 }
 
+std::string counted(long count, const std::string& one, const std::string& many) {
+  return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
 }  // namespace lamina::tutorial

@@ -16,5 +16,7 @@ std::string scientific(double x);
 std::string fixed(const Vec3& v, int decimals = 3);
 // The three rows of a matrix, "[ a  b  c ]", with fixed decimals and aligned columns.
 std::vector<std::string> fixed_rows(const Mat3& m, int decimals = 3);
+// "1 step", "3 steps": a count and its noun, singular or plural.
+std::string counted(long count, const std::string& one, const std::string& many);
 
 }  // namespace lamina::tutorial
