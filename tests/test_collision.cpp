@@ -25,7 +25,7 @@ Pose2 pose(double x, double y, double angle = 0.0) {
 }
 
 const CachedPoints none{};
-constexpr double tie = 5e-4;  // the cache's default tie tolerance, in m
+const TieRule tie;  // the cache's default: ties broken within 5e-4 m
 
 // A contact with this normal (body 1 → body 2), depth and deepest point, each within `tolerance`.
 void check_collision(const std::optional<Collision>& c, const Vec2& normal, double depth,

@@ -244,17 +244,20 @@ TEST_SUITE("Contact") {
     run(world, 120);
     WorldReport report;
     world.step(report);
-    // the row map: the pair's two contact rows, then their friction rows, then the joint's two
-    REQUIRE(report.velocity.mlcp.row_count() == 6);
+    // the row map: the pair's two contact rows, then the manifold's one friction row (pgs,
+    // contact_rows.h), then the joint's two
+    REQUIRE(report.velocity.mlcp.row_count() == 5);
     REQUIRE(report.pairs.size() == 1);
     const ContactPair& pair = report.pairs[0];
     REQUIRE(pair.count == 2);
     CHECK(pair.contacts[0].row == 0);
     CHECK(pair.contacts[1].row == 1);
     CHECK(pair.contacts[0].friction_rows[0] == 2);
-    CHECK(pair.contacts[1].friction_rows[0] == 3);
+    CHECK(pair.contacts[1].friction_rows[0] == 2);
+    CHECK(pair.rows.first == 0);
+    CHECK(pair.rows.count == 3);
     REQUIRE(report.joints.size() == 1);
-    CHECK(report.joints[0].first == 4);
+    CHECK(report.joints[0].first == 3);
     CHECK(report.joints[0].count == 2);
     const RigidBody& box = world.bodies()[1];
     CHECK((box.x + box.rotation * Vec3(0.5, 0.5, 0.0) - pin).norm() < 1e-3);
@@ -324,7 +327,7 @@ TEST_SUITE("World") {
     world.step(report);
     CHECK(report.velocity.solution.residuals.size() == 10);  // the default 10 sweeps
     CHECK(report.contacts().size() == 2);
-    CHECK(report.velocity.mlcp.row_count() == 4);  // two contact rows, two friction rows
+    CHECK(report.velocity.mlcp.row_count() == 3);  // two contact rows, the manifold's friction row
     CHECK(report.position.mlcp.row_count() == 2);  // split impulse: one row per contact
     CHECK(report.time == doctest::Approx(5.0 / 60.0).epsilon(1e-12));
   }

@@ -24,8 +24,10 @@ struct ConstraintRow {
   double lambda_min = -infinity;    // λ⁻, lower bound of λ, in N (eq. 3-24)
   double lambda_max = infinity;     // λ⁺, upper bound of λ, in N (eq. 3-24)
   // A friction row's bounds are ±μ λc, read from its contact row's current λ during the
-  // iterations (eq. 3-26 and chapter 4, "friction"); −1 for a row with fixed bounds.
-  int friction_of = -1;             // index of the contact row bounding this one, or −1
+  // iterations (eq. 3-26 and chapter 4, "friction"); −1 for a row with fixed bounds. A row for a
+  // whole two-point manifold is bounded by ±μ (λc1 + λc2), its contact rows' sum.
+  int friction_of = -1;             // index of the (first) contact row bounding this one, or −1
+  int friction_count = 1;           // how many consecutive contact rows from friction_of bound it
   double mu = 0.0;                  // μ of a friction row
 
   bool is_one_body() const { return Jmap[1] < 0; }

@@ -51,6 +51,7 @@ void pack_row(const std::vector<RigidBody>& bodies, const ConstraintRow& row,
   packed.lambda_min = row.lambda_min;
   packed.lambda_max = row.lambda_max;
   packed.friction_of = row.friction_of;
+  packed.friction_count = row.friction_count;
   packed.mu = row.mu;
 }
 

@@ -24,7 +24,8 @@ struct PackedRowScalars {
   double inverse_d = 0.0;          // 1/d_i, d_i = J_i · B_i
   double lambda_min = 0.0;         // λ⁻ of a row with fixed bounds, in N
   double lambda_max = 0.0;         // λ⁺ of a row with fixed bounds, in N
-  int friction_of = -1;            // the contact row bounding a friction row, or −1
+  int friction_of = -1;            // the (first) contact row bounding a friction row, or −1
+  int friction_count = 1;          // how many consecutive contact rows from friction_of bound it
   double mu = 0.0;                 // μ of a friction row
   double zeta = 0.0;               // ζ_i, the velocity asked of J_i V(t+Δt), in m/s or rad/s
 
@@ -42,12 +43,15 @@ template <int N>
 using PackedRows = std::vector<PackedRow<N>>;
 
 // The bounds of a row for the current λ (λ[0..s)): fixed, or ±μ λc for a friction row
-// (eq. 3-26). `Row` is a packed row or a ConstraintRow.
+// (eq. 3-26), λc being its contact row's λ or the sum over a manifold's contact rows.
+// `Row` is a packed row or a ConstraintRow.
 template <class Row>
 std::array<double, 2> bounds_of(const Row& row, const double* lambda) {
   if (row.friction_of < 0) return {row.lambda_min, row.lambda_max};
-  // eq. 3-26: a friction row is bounded by ±μ λc of its contact row
-  const double limit = row.mu * lambda[row.friction_of];
+  double normal = lambda[row.friction_of];
+  for (int k = 1; k < row.friction_count; ++k) normal += lambda[row.friction_of + k];
+  // eq. 3-26: a friction row is bounded by ±μ λc
+  const double limit = row.mu * normal;
   return {-limit, limit};
 }
 

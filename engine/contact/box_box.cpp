@@ -76,12 +76,12 @@ struct Candidates {
   const Collision* end() const { return items.data() + count; }
 };
 
-// Among candidates within tie_tolerance of the deepest: on a first contact the midpoint of the
-// deepest one's reference group (two vertices of one edge: a flat landing pushes straight up);
-// otherwise the candidate farthest from the cached points, so that the cache gains the point
-// it lacks. Ties beyond that go to the first candidate, keeping the result deterministic.
-Collision choose(const Candidates& candidates, const CachedPoints& cached,
-                 double tie_tolerance) {
+// The deepest candidate; with ties broken, among candidates within the tolerance of the deepest:
+// on a first contact the midpoint of the deepest one's reference group (two vertices of one
+// edge: a flat landing pushes straight up); otherwise the candidate farthest from the cached
+// points, so that the cache gains the point it lacks. Ties beyond that go to the first
+// candidate, keeping the result deterministic.
+Collision choose(const Candidates& candidates, const CachedPoints& cached, const TieRule& ties) {
   double deepest = -std::numeric_limits<double>::infinity();
   int first = 0;
   for (int k = 0; k < candidates.count; ++k) {
@@ -90,7 +90,8 @@ Collision choose(const Candidates& candidates, const CachedPoints& cached,
       first = k;
     }
   }
-  const auto tied = [&](const Collision& c) { return c.depth >= deepest - tie_tolerance; };
+  if (!ties.break_ties) return candidates.items[first];
+  const auto tied = [&](const Collision& c) { return c.depth >= deepest - ties.tolerance; };
   if (cached.count == 0) {
     Collision mid = candidates.items[first];
     mid.point.setZero();
@@ -126,7 +127,7 @@ Collision choose(const Candidates& candidates, const CachedPoints& cached,
 
 std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, const Shape& box2,
                                        const Pose2& pose2, const CachedPoints& cached,
-                                       double tie_tolerance) {
+                                       const TieRule& ties) {
   const std::array<Vec2, 4> corners1 = vertices_of(box1, pose1);
   const std::array<Vec2, 4> corners2 = vertices_of(box2, pose2);
   // Separating axis test over both boxes' face normals: body 1's faces against body 2's
@@ -138,7 +139,8 @@ std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, co
 
   // Candidates: the incident vertices inside the reference box, trying both boxes as the
   // reference when their faces separate equally (a box resting half over another has one
-  // supported vertex of its own and one of the box below).
+  // supported vertex of its own and one of the box below) — when ties are broken.
+  const double tie_tolerance = ties.break_ties ? ties.tolerance : 0.0;
   const std::array<const std::array<Vec2, 4>*, 2> corners{&corners1, &corners2};
   const auto candidate = [&](int ref, int v) {
     const FaceTable& table = tables[ref];
@@ -168,7 +170,7 @@ std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, co
     }
     return candidate(ref, deepest);
   }
-  return choose(candidates, cached, tie_tolerance);
+  return choose(candidates, cached, ties);
 }
 
 }  // namespace lamina

@@ -31,7 +31,7 @@ void refresh(ContactPair& pair, const std::vector<Pose2>& poses, const std::vect
     Contact c = pair.contacts[k];
     place(c, pose1, pose2);
     c.fresh = false;
-    if (c.drift > settings.drift_limit) {
+    if (settings.reanchor && c.drift > settings.drift_limit) {
       reanchor(c, pose1, pose2);
       const int ref_body = c.reference == 0 ? pair.bodies.first : pair.bodies.second;
       if (!contains(shapes[ref_body], poses[ref_body], reference_point(c, pose1, pose2),
@@ -82,7 +82,7 @@ void validate(const CacheSettings& s) {
   require_margin(s.keep_margin, "keep_margin");
   require_margin(s.merge_distance, "merge_distance");
   require_margin(s.drift_limit, "drift_limit");
-  require_margin(s.tie_tolerance, "tie_tolerance");
+  require_margin(s.ties.tolerance, "ties.tolerance");
 }
 
 CachedPoints ContactCache::cached_points(const BodyPair& bodies, const std::vector<Pose2>& poses,

@@ -28,7 +28,9 @@ struct CacheSettings {
   double keep_margin = 0.01;    // a cached point is dropped once its separation C exceeds this, in m
   double merge_distance = 0.02; // a fresh point this close to a cached one replaces it, in m
   double drift_limit = 0.01;    // anchors that slid apart by more than this are re-anchored, in m
-  double tie_tolerance = 5e-4;  // vertices this close to the deepest count as equally deep, in m
+  bool reanchor = true;         // false: a cached point keeps its anchors however far they slide
+                                // (the text, which keeps a point until C > keep_margin)
+  TieRule ties;                 // how equally deep vertices are told apart (narrow_phase.h)
 };
 
 // Throws std::invalid_argument naming the first margin that is negative or not finite.

@@ -21,10 +21,11 @@ int append_row(std::vector<ConstraintRow>& rows, const RowEnds& ends, const Vec3
   return static_cast<int>(rows.size()) - 1;
 }
 
-// The velocity a cached point with a gap may approach at.
-double gap_velocity(double separation, double dt) {
+// The velocity a cached point with a gap may approach at: 0 for the text (eq. 4-4's
+// ζ = −β min(C, 0) is 0 for C > 0), or as fast as closes the gap within the step.
+double gap_velocity(double separation, const ContactSettings& settings, double dt) {
   // a gap C > 0 may close within the step, no faster: J V ≥ −C/Δt (0 when touching)
-  return separation > 0.0 ? -separation / dt : 0.0;
+  return settings.close_gaps && separation > 0.0 ? -separation / dt : 0.0;
 }
 
 // The velocity that pushes a penetration out, a slop deep being left alone.
@@ -39,13 +40,13 @@ void write_contact_row(ConstraintRow& row, const ContactPair& pair, const Contac
                        const StepSettings& step) {
   // eq. 4-3, 5-10: 0 ≤ λ < ∞
   row.lambda_min = 0.0;
-  row.zeta = gap_velocity(contact.separation, step.dt);
+  row.zeta = gap_velocity(contact.separation, settings, step.dt);
   if (settings.correction == PositionCorrection::baumgarte) {
     row.zeta += push_out_velocity(contact.separation, settings, step);
   }
   // Restitution (beyond the text): a touching point approaching faster than v_e leaves at e times
   // its approach speed J V(t). With e = 0 that asks for ζ ≥ 0, which ζ already is when touching.
-  if (pair.restitution == 0.0 || contact.separation > 0.0) return;
+  if (!settings.restitution || pair.restitution == 0.0 || contact.separation > 0.0) return;
   const double approach = row_velocity(row, bodies);
   if (approach < -settings.restitution_threshold) {
     row.zeta = std::max(row.zeta, -pair.restitution * approach);
@@ -58,6 +59,20 @@ int friction_rows_per_contact(const ContactPair& pair, const ContactSettings& se
   if (pair.friction == 0.0) return 0;
   return settings.out_of_plane_friction ? 2 : 1;
 }
+
+// Appends a friction row along u at the ends' point, bounded by ±μ times the λ of `count`
+// contact rows from `contact_row` (eq. 3-26, λc read from them during the iterations).
+int append_friction_row(std::vector<ConstraintRow>& rows, const ContactPair& pair,
+                        const RowEnds& ends, const Vec3& u, int contact_row, int count) {
+  const int index = append_row(rows, ends, u);
+  rows.back().friction_of = contact_row;
+  rows.back().friction_count = count;
+  rows.back().mu = pair.friction;
+  return index;
+}
+
+// The direction of friction row t: u1 = z × n in the plane, u2 = z.
+Vec3 tangent(int t, const Vec2& normal) { return t == 0 ? lift(tangent_of(normal)) : Vec3::UnitZ(); }
 
 }  // namespace
 
@@ -83,19 +98,29 @@ void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBo
       write_contact_row(rows.back(), pair, contact, bodies, settings, step);
       lambda.push_back(contact.lambda_normal);
     }
+    for (int k = 0; k < pair.count; ++k) pair.contacts[k].friction_rows = {-1, -1};
     const int tangents = friction_rows_per_contact(pair, settings);
-    for (int t = 0; t < 2; ++t) {
+    const bool one_row = settings.friction == FrictionRows::per_manifold && pair.count == 2;
+    for (int t = 0; t < tangents; ++t) {
+      if (one_row) {
+        Contact& a = pair.contacts[0];
+        Contact& b = pair.contacts[1];
+        // the manifold's middle and normal; its contact rows are a.row and a.row + 1
+        const Vec2 middle = 0.5 * (a.point + b.point);
+        const Vec2 sum = a.normal + b.normal;  // opposite normals cannot share a tangent
+        const Vec2 normal = sum.norm() > 1e-9 ? Vec2(sum.normalized()) : a.normal;
+        const RowEnds at_middle =
+            ends_at_point(bodies, pair.bodies.first, pair.bodies.second, lift(middle));
+        a.friction_rows[t] = b.friction_rows[t] =
+            append_friction_row(rows, pair, at_middle, tangent(t, normal), a.row, 2);
+        lambda.push_back(t == 0 ? a.lambda_tangent + b.lambda_tangent : 0.0);
+        continue;
+      }
       for (int k = 0; k < pair.count; ++k) {
         Contact& contact = pair.contacts[k];
-        contact.friction_rows[t] = -1;
-        if (t >= tangents) continue;
-        const bool in_plane = t == 0;
-        const Vec3 u = in_plane ? lift(tangent_of(contact.normal)) : Vec3::UnitZ();
-        contact.friction_rows[t] = append_row(rows, ends[k], u);
-        // eq. 3-26 with λ± = ±μ λc, λc read from the contact row during the iterations
-        rows.back().friction_of = contact.row;
-        rows.back().mu = pair.friction;
-        lambda.push_back(in_plane ? contact.lambda_tangent : 0.0);
+        contact.friction_rows[t] =
+            append_friction_row(rows, pair, ends[k], tangent(t, contact.normal), contact.row, 1);
+        lambda.push_back(t == 0 ? contact.lambda_tangent : 0.0);
       }
     }
     pair.rows.count = static_cast<int>(rows.size()) - pair.rows.first;
@@ -109,6 +134,17 @@ void store_contact_lambdas(std::vector<ContactPair>& pairs, const double* lambda
       contact.lambda_normal = lambda[contact.row];
       contact.lambda_tangent = contact.friction_rows[0] >= 0 ? lambda[contact.friction_rows[0]] : 0.0;
     }
+    const bool one_row = pair.count == 2 && pair.contacts[0].friction_rows[0] >= 0 &&
+                         pair.contacts[0].friction_rows[0] == pair.contacts[1].friction_rows[0];
+    if (!one_row) continue;
+    // the manifold's friction λ shared in proportion to the points' λc (halves when both are 0)
+    Contact& a = pair.contacts[0];
+    Contact& b = pair.contacts[1];
+    const double total = a.lambda_normal + b.lambda_normal;
+    const double share = total > 0.0 ? a.lambda_normal / total : 0.5;
+    const double friction = a.lambda_tangent;
+    a.lambda_tangent = share * friction;
+    b.lambda_tangent = friction - a.lambda_tangent;
   }
 }
 
@@ -120,7 +156,7 @@ void position_targets(const std::vector<ContactPair>& pairs, const ContactSettin
     for (int k = 0; k < pair.count; ++k) {
       const Contact& contact = pair.contacts[k];
       rows.push_back(contact.row);
-      zeta.push_back(gap_velocity(contact.separation, step.dt) +
+      zeta.push_back(gap_velocity(contact.separation, settings, step.dt) +
                      push_out_velocity(contact.separation, settings, step));
     }
   }

@@ -4,11 +4,21 @@
 //   contact row   J = [−nᵀ  −(r1×n)ᵀ  nᵀ  (r2×n)ᵀ]  0 ≤ λ < ∞                       (eq. 4-3)
 //   friction row  J = [−uᵀ  −(r1×u)ᵀ  uᵀ  (r2×u)ᵀ]  −μ λc ≤ λ ≤ μ λc               (chapter 4)
 //   u1 = z × n (in the plane); u2 = z (the text's second tangent, optional: its λ is 0)
-//   ζ/Δt = −β min(C + slop, 0) / Δt    the push-out of eq. 4-4, 4-5 (with a slop)
+//   ζ/Δt = −β min(C + slop, 0) / Δt    the push-out of eq. 4-4, 4-5 (with a slop; the text's
+//                                       slop is 0)
+// Beyond the text, each switched in ContactSettings (the text's method, solvers.h, has them off):
 //   gap:  −C / Δt when C > 0            a cached point that opened a gap may close it within
-//                                       the step, no faster (a zero target there makes boxes
+//                                       the step, no faster (the text's ζ = 0 there makes boxes
 //                                       hover and stacks creep)
-//   bounce: −e (J V) when J V < −v_e    restitution, beyond the text (Box2D's rule)
+//   bounce: −e (J V) when J V < −v_e    restitution (Box2D's rule)
+//   one friction row per manifold       for a pair touching at two points, one row along u at
+//                                       their middle, bounded by ±μ (λc1 + λc2). In the plane
+//                                       the two points' friction rows differ only by
+//                                       ((r_a − r_b)·n) in their ω_z entry, zero on a flat
+//                                       manifold: PGS can then move λ from one to the other
+//                                       freely and a resting box holds friction against
+//                                       itself. One row carries the same total force with no
+//                                       such freedom, and obeys Coulomb's law for the pair.
 // ConstraintRow::zeta is the velocity J V(t+Δt) must reach (eq. 3-15), so the text's distance
 // ζ of eq. 4-4 is stored divided by Δt, as eq. 4-5 uses it. The rows are point rows
 // (jacobian_rows.h): a static body holds no block, as eq. 5-8 writes it.
@@ -29,10 +39,19 @@ enum class PositionCorrection {
   split_impulse  // beyond the text: a second solve moves positions only, v keeps no push-out
 };
 
+// Friction rows of a pair that touches at two points.
+enum class FrictionRows {
+  per_point,    // the text: one row per contact point, each bounded by its own ±μ λc
+  per_manifold  // beyond the text: one row at the manifold's middle, ±μ (λc1 + λc2)
+};
+
 struct ContactSettings {
   double slop = 0.005;                 // penetration left alone, in m (Box2D's b2_linearSlop)
   double restitution_threshold = 1.0;  // v_e: slower approaches do not bounce, in m/s (Box2D's)
   PositionCorrection correction = PositionCorrection::split_impulse;  // see above
+  bool restitution = true;             // honour the materials' e (false: e = 0, the text)
+  bool close_gaps = true;              // a cached point's gap may close within a step
+  FrictionRows friction = FrictionRows::per_manifold;  // see above
   bool out_of_plane_friction = false;  // add the u2 = z friction row too
 };
 
@@ -42,12 +61,15 @@ void validate(const ContactSettings& settings);
 // Appends the rows of every pair, with each row's warm-start λ (the cache's) appended to
 // `lambda`: the pair's contact rows, then its friction rows (below their contact rows, as the
 // text orders them, so a friction bound reads the λc updated in the same sweep). Records where
-// they went: each pair's `rows`, each contact's `row` and `friction_rows`. Uses β and Δt.
+// they went: each pair's `rows`, each contact's `row` and `friction_rows` (both contacts of a
+// manifold name its one friction row). Uses β and Δt.
 void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
                       const ContactSettings& settings, const StepSettings& step,
                       std::vector<ConstraintRow>& rows, std::vector<double>& lambda);
 
-// Stores the solved λ of each contact's rows into the cache (the next step's warm start).
+// Stores the solved λ of each contact's rows into the cache (the next step's warm start); a
+// manifold's one friction λ is shared by its points in proportion to their λc, so that each
+// point's share lies within its own ±μ λc and the two add up to the row's λ.
 void store_contact_lambdas(std::vector<ContactPair>& pairs, const double* lambda);
 
 // Split impulse: each contact's contact row, and the ζ the same row asks of the position solve,

@@ -50,9 +50,9 @@ std::optional<Collision> collide_circles(const Shape& circle1, const Pose2& pose
 
 std::optional<Collision> collide(const Shape& shape1, const Pose2& pose1, const Shape& shape2,
                                  const Pose2& pose2, const CachedPoints& cached,
-                                 double tie_tolerance) {
+                                 const TieRule& ties) {
   if (shape1.is_box() && shape2.is_box()) {
-    return collide_boxes(shape1, pose1, shape2, pose2, cached, tie_tolerance);
+    return collide_boxes(shape1, pose1, shape2, pose2, cached, ties);
   }
   if (shape1.is_box()) return collide_box_circle(shape1, pose1, shape2, pose2);
   if (shape2.is_box()) {

@@ -28,6 +28,15 @@ struct Collision {
   int reference = 0;           // 0: n is normal to body 1's surface; 1: to body 2's
 };
 
+// How the narrow phase picks among equally deep vertices. The text returns "the deepest point"
+// as if there were always one; a box landing flat has two, and taking the first one found makes
+// it spin. Lamina's rule (beyond the text): among the vertices within `tolerance` of the deepest,
+// the one farthest from the pair's cached points, or on a first contact their midpoint.
+struct TieRule {
+  bool break_ties = true;   // false: the first deepest vertex found, as the text reads
+  double tolerance = 5e-4;  // vertices this close to the deepest count as equally deep, in m
+};
+
 // The points a pair's cache already holds (world frame), for breaking ties between equally deep
 // vertices: the narrow phase returns the one farthest from them.
 struct CachedPoints {
@@ -35,17 +44,16 @@ struct CachedPoints {
   int count = 0;                                            // how many are valid
 };
 
-// The deepest point of two shapes at their poses, or nothing when they are apart.
-// Vertices within `tie_tolerance` (m) of the deepest count as equally deep: the one farthest
-// from `cached` is returned, or on a first contact (no cached points) their midpoint.
+// The deepest point of two shapes at their poses, or nothing when they are apart; equally deep
+// vertices are told apart by `ties`.
 std::optional<Collision> collide(const Shape& shape1, const Pose2& pose1, const Shape& shape2,
                                  const Pose2& pose2, const CachedPoints& cached,
-                                 double tie_tolerance);
+                                 const TieRule& ties);
 
 // The three pair types; `collide` dispatches to them (box–circle also serves circle–box).
 std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, const Shape& box2,
                                        const Pose2& pose2, const CachedPoints& cached,
-                                       double tie_tolerance);
+                                       const TieRule& ties);
 std::optional<Collision> collide_box_circle(const Shape& box, const Pose2& box_pose,
                                             const Shape& circle, const Pose2& circle_pose);
 std::optional<Collision> collide_circles(const Shape& circle1, const Pose2& pose1,

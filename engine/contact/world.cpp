@@ -158,7 +158,7 @@ void World::detect_collisions() {
         settings_.cache.enabled ? cache_.cached_points(pair, poses_, cursor) : CachedPoints{};
     const std::optional<Collision> collision =
         collide(shapes_[pair.first], poses_[pair.first], shapes_[pair.second],
-                poses_[pair.second], cached, settings_.cache.tie_tolerance);
+                poses_[pair.second], cached, settings_.cache.ties);
     if (collision) fresh_.push_back({pair, *collision});
   }
 }

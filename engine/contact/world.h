@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "constraints/constrained_step.h"
@@ -35,6 +36,7 @@
 namespace lamina {
 
 struct WorldSettings {
+  std::string solver = "pgs";           // the method these switches make (solvers.h), for captions
   StepSettings step;                    // g, Δt, β (of contacts and joints), PGS sweeps
   int position_iterations = 3;          // PGS sweeps of the split-impulse position MLCP (Box2D: 3)
   ContactSettings contact;              // slop, restitution, position correction

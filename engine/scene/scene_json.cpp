@@ -278,7 +278,7 @@ JointDescription read_joint(const Reader& r, const json& j, const std::string& p
 }
 
 Scene read_scene(const Reader& r, const json& j) {
-  r.expect_object(j, "", {"name", "description", "gravity", "dt", "iterations", "beta", "steps",
+  r.expect_object(j, "", {"name", "description", "solver", "gravity", "dt", "iterations", "beta", "steps",
                           "bodies", "joints"});
   Scene scene;
   optional(r, j, "", "name", scene.name, &Reader::text);
@@ -286,6 +286,7 @@ Scene read_scene(const Reader& r, const json& j) {
   Vec2 gravity = scene.step.gravity.head<2>();
   optional(r, j, "", "gravity", gravity, &Reader::vec2, scene_limits::gravity);
   scene.step.gravity = Vec3(gravity.x(), gravity.y(), 0.0);
+  optional(r, j, "", "solver", scene.solver, &Reader::text);
   optional(r, j, "", "dt", scene.step.dt, &Reader::in_range, scene_limits::dt);
   optional(r, j, "", "iterations", scene.step.iterations, &Reader::count, scene_limits::iterations);
   optional(r, j, "", "beta", scene.step.beta, &Reader::in_range, scene_limits::beta);
@@ -370,6 +371,7 @@ Scene read_scene_file(const std::string& path) {
 
 std::string scene_to_json(const Scene& scene) {
   ordered_json j = {{"name", scene.name}, {"description", scene.description},
+                    {"solver", scene.solver},
                     {"gravity", vec2_json(scene.step.gravity.head<2>())}, {"dt", scene.step.dt},
                     {"iterations", scene.step.iterations}, {"beta", scene.step.beta},
                     {"steps", scene.steps},

@@ -7,6 +7,7 @@
 
 #include "constraints/distance_constraint.h"
 #include "constraints/revolute_joint.h"
+#include "contact/solvers.h"
 
 namespace lamina {
 namespace {
@@ -57,7 +58,7 @@ auto at_path(const std::string& path, Add&& add) {
 WorldSettings world_settings(const Scene& scene) {
   WorldSettings settings;
   settings.step = scene.step;
-  return settings;
+  return with_solver(settings, scene.solver);
 }
 
 World build_world(const Scene& scene, const WorldSettings& settings) {

@@ -6,8 +6,9 @@
 
 namespace lamina {
 
-// The world settings a scene asks for (its StepSettings: g, Δt, β, sweeps); the rest are the
-// defaults.
+// The world settings a scene asks for: its solver's (contact/solvers.h) and its StepSettings
+// (g, Δt, β, sweeps); the rest are the defaults. Throws std::invalid_argument, "solver: ...",
+// for a solver name that is none.
 WorldSettings world_settings(const Scene& scene);
 
 // The scene's bodies, in order (World body i is scene.bodies[i]), with their shapes, materials,

@@ -24,6 +24,7 @@ void execute(const Command& c) {
   switch (c.kind) {
     case Command::Kind::run: return run_scene(c.run);
     case Command::Kind::scenes: return list_scenes();
+    case Command::Kind::solvers: return list_solvers();
     case Command::Kind::show: return show_scene(c.scene);
     case Command::Kind::check: return check_scene(c.scene);
   }

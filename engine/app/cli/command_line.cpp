@@ -6,6 +6,7 @@
 
 #include "app/harness/render_request.h"
 #include "app/cli/exit_codes.h"
+#include "contact/solvers.h"
 #include "scene/scene_limits.h"
 
 namespace lamina::cli {
@@ -48,6 +49,12 @@ void add_run_options(CLI::App& run, RunOptions& o, std::string& explain_format) 
   add_optional(run, "--beta", o.beta, "β of the position bias, eq. 3-14 and 4-4 (default: the scene's)")
       ->type_name("B")->check(range_of(scene_limits::beta));
   run.add_flag("--no-cache", o.no_cache, "solve without the contact cache (no warm start, Fig 4-2..4-5)");
+  std::vector<std::string> solvers;
+  for (const SolverInfo& s : solver_list()) solvers.push_back(s.name);
+  add_optional(run, "--solver", o.solver,
+               "the method: text (the text's own) or pgs (Lamina's additions); `lamina solvers` "
+               "says what each does (default: the scene's `solver`)")
+      ->type_name("NAME")->check(CLI::IsMember(solvers));
   auto* trace = add_optional(run, "--trace", o.trace,
                              "write every step to FILE: JSON Lines, or CSV when FILE ends in .csv "
                              "(contacts then go to FILE.contacts.csv)")->type_name("FILE");
@@ -72,7 +79,7 @@ std::string parse_error_message(const CLI::App& app, const CLI::ParseError& e) {
   if (!app.get_subcommands().empty()) return e.what();
   const std::vector<std::string> rest = app.remaining();
   return (rest.empty() ? std::string("expected") : "'" + rest.front() + "' is not") +
-         " a subcommand: run, scenes, show or check (see lamina --help)";
+         " a subcommand: run, scenes, solvers, show or check (see lamina --help)";
 }
 
 }  // namespace
@@ -87,11 +94,12 @@ ParsedCommand parse_command_line(int argc, char** argv) {
   CLI::App* run = app.add_subcommand("run", "simulate a scene; write its trace, frames, or one step explained");
   add_run_options(*run, c.run, explain_format);
   CLI::App* scenes = app.add_subcommand("scenes", "list the built-in scenes with a line on each");
+  CLI::App* solvers = app.add_subcommand("solvers", "list the solvers with what each departs from the text");
   CLI::App* show = app.add_subcommand("show", "print a scene as a JSON scene file, to copy and edit");
   show->add_option("SCENE", c.scene, scene_help)->required();
   CLI::App* check = app.add_subcommand("check", "validate a scene file; simulate nothing");
   check->add_option("SCENE", c.scene, scene_help)->required();
-  for (CLI::App* sub : {run, scenes, show, check}) sub->footer(exit_codes);
+  for (CLI::App* sub : {run, scenes, solvers, show, check}) sub->footer(exit_codes);
   try {
     app.parse(argc, argv);
     c.run.explain_json = explain_format == "json";
@@ -101,7 +109,7 @@ ParsedCommand parse_command_line(int argc, char** argv) {
     return {std::nullopt, exit_bad_input};
   }
   c.kind = *run ? Command::Kind::run : *scenes ? Command::Kind::scenes
-         : *show ? Command::Kind::show : Command::Kind::check;
+         : *solvers ? Command::Kind::solvers : *show ? Command::Kind::show : Command::Kind::check;
   return {c, exit_ok};
 }
 

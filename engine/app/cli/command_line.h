@@ -9,7 +9,7 @@
 namespace lamina::cli {
 
 struct Command {
-  enum class Kind { run, scenes, show, check };
+  enum class Kind { run, scenes, solvers, show, check };
   Kind kind = Kind::run;
   RunOptions run;     // run's options
   std::string scene;  // show's and check's SCENE

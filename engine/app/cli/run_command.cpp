@@ -17,10 +17,11 @@ namespace lamina::cli {
 namespace {
 
 WorldSettings run_settings(const RunOptions& o, Scene& scene) {
+  if (o.solver) scene.solver = *o.solver;
   if (o.dt) scene.step.dt = *o.dt;
   if (o.iterations) scene.step.iterations = *o.iterations;
   if (o.beta) scene.step.beta = *o.beta;
-  WorldSettings settings = world_settings(scene);
+  WorldSettings settings = checked_settings(scene, o.scene);
   settings.cache.enabled = !o.no_cache;
   return settings;
 }
@@ -157,7 +158,11 @@ void run_scene(Scene scene, const RunOptions& o) {
   std::optional<FrameRecording> recording;
   const std::string& description = simulation.scene().description;
   const std::string& name = simulation.scene().name;
-  if (o.frames) recording.emplace(simulation.world(), o.every, description.empty() ? name : name + " · " + description);
+  if (o.frames) {
+    const std::string solver = "solver: " + simulation.world().settings().solver;
+    recording.emplace(simulation.world(), o.every,
+                      (description.empty() ? name : name + " · " + description) + " · " + solver);
+  }
   const long frame_count = o.frames ? (steps + o.every - 1) / o.every : 0;
   ProgressBar progress(name, steps + frame_count);
   simulation.show_progress(progress);

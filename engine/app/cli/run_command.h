@@ -18,6 +18,7 @@ struct RunOptions {
   std::optional<double> dt;                     // --dt, in s (else the scene's)
   std::optional<int> iterations;                // --iterations (else the scene's)
   std::optional<double> beta;                   // --beta (else the scene's)
+  std::optional<std::string> solver;            // --solver NAME (else the scene's)
   bool no_cache = false;                        // --no-cache
   std::optional<std::filesystem::path> trace;   // --trace FILE
   std::optional<std::filesystem::path> frames;  // --frames DIR

@@ -8,11 +8,20 @@
 #include "app/cli/scene_source.h"
 #include "app/harness/format.h"
 #include "app/cli/simulation.h"
+#include "contact/solvers.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_json.h"
 #include "scene/scene_world.h"
 
 namespace lamina::cli {
+
+void list_solvers() {
+  std::size_t width = 0;
+  for (const SolverInfo& s : solver_list()) width = std::max(width, s.name.size());
+  for (const SolverInfo& s : solver_list()) {
+    std::printf("%-*s  %s\n", static_cast<int>(width), s.name.c_str(), s.departures.c_str());
+  }
+}
 
 void list_scenes() {
   const std::vector<BuiltinScene> scenes = builtin_scene_list();
@@ -34,7 +43,7 @@ void show_scene(const std::string& source) { std::cout << scene_to_json(load_sce
 
 void check_scene(const std::string& source) {
   const Scene scene = load_scene(source);
-  checked_world(scene, world_settings(scene), source);
+  checked_world(scene, checked_settings(scene, source), source);
   std::cout << source << ": ok, " << tutorial::counted(static_cast<long>(scene.bodies.size()), "body", "bodies") << ", "
             << tutorial::counted(static_cast<long>(scene.joints.size()), "joint", "joints") << "\n";
 }

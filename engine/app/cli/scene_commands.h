@@ -1,4 +1,5 @@
-// `lamina scenes`, `lamina show SCENE` and `lamina check SCENE`: the scenes, without running them.
+// `lamina scenes`, `lamina solvers`, `lamina show SCENE` and `lamina check SCENE`: the scenes and
+// the methods, without running them.
 #pragma once
 
 #include <string>
@@ -7,6 +8,9 @@ namespace lamina::cli {
 
 // The built-in scenes, one per line: name, then its one-line description.
 void list_scenes();
+
+// The solvers, one per line: name, then what it does and departs from the text.
+void list_solvers();
 
 // The scene as a JSON scene file on standard output (docs/scene-format.md).
 void show_scene(const std::string& source);

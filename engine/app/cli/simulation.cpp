@@ -29,6 +29,14 @@ std::string planar_state(const RigidBody& body) {
 
 }  // namespace
 
+WorldSettings checked_settings(const Scene& scene, const std::string& origin) {
+  try {
+    return world_settings(scene);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(origin + ": " + e.what());
+  }
+}
+
 World checked_world(const Scene& scene, const WorldSettings& settings, const std::string& origin) {
   try {
     return build_world(scene, settings);

@@ -46,7 +46,9 @@ class Simulation {
   ProgressBar* progress_ = nullptr;    // the bar that counts steps, if any
 };
 
-// The world built from the scene, with the engine's refusals named after `origin`.
+// The settings the scene asks for (world_settings), and the world built from it, with the
+// engine's refusals named after `origin` (InputError).
+WorldSettings checked_settings(const Scene& scene, const std::string& origin);
 World checked_world(const Scene& scene, const WorldSettings& settings, const std::string& origin);
 
 }  // namespace lamina::cli

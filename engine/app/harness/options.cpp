@@ -33,6 +33,14 @@ ParsedOptions parse_options(int argc, char** argv, const TutorialInfo& info) {
                "q to stop); renders nothing")
       ->excludes(explain_option);
   if (info.has_cache) app.add_flag("--no-cache", o.no_cache, "solve without the contact cache");
+  if (!info.solvers.empty()) {
+    app.add_option_function<std::string>(
+           "--solver", [&o](const std::string& name) { o.solver = name; },
+           "the method: text (the text's own) or pgs (with Lamina's additions), as `lamina "
+           "solvers` lists them (default: each scene's own)")
+        ->type_name("NAME")
+        ->check(CLI::IsMember(info.solvers));
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

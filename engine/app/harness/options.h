@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/harness/render_request.h"
 #include "render/overlay.h"
@@ -17,6 +18,7 @@ struct TutorialInfo {
   std::string summary;                // one line for --help
   render::Overlays default_overlays;  // --overlay when not given
   bool has_cache = false;             // offers --no-cache (chapters with a contact cache)
+  std::vector<std::string> solvers = {};  // offers --solver NAME with these (chapters with a World)
 };
 
 struct Options {
@@ -28,6 +30,7 @@ struct Options {
   bool json = false;                 // --explain-format json
   bool step_through = false;         // --step-through: print every step, render nothing
   bool no_cache = false;             // --no-cache (only where has_cache)
+  std::optional<std::string> solver; // --solver NAME (only where solvers are offered)
 };
 
 // The parsed options, or the exit code when parsing ended the run (--help, a bad option; CLI11
