@@ -1,12 +1,13 @@
-// Chapter 5 — the walk-through, run. Box A (1 m, 1 kg) at rest, turned by 0.005 rad so that its
-// corner a is 0.01 m into the fixed ground B; the text's method: Baumgarte bias (β = 0.2, no
-// slop) and no friction, so the MLCP is exactly eq. 5-8 (one row at t = τ) and eq. 5-19 (two rows,
-// the cached a and the fresh b, at t = τ + Δt). Each frame shows the state at t with what the step
-// from t solved: M⁻¹, F_ext, V, x_a, ε, ζ, J, λ, f_c, τ_c (eq. 5-1..5-21), and two insets that
-// magnify the corners. normal_force.png shows Σ λ converging to m g (t → ∞).
-// The text has z up (N = (0, 0, 1)); Lamina, like Box2D, has y up (N = (0, 1, 0)).
-#include <algorithm>
-#include <array>
+// Chapter 5 — the walk-through, run by the text's own method (--solver text: Baumgarte's bias with
+// β = 0.2 and no slop, the contact cache, no friction in chapter 5). Box A (1 m, 1 kg) at rest,
+// turned by 0.005 rad so that its corner a is 0.01 m into the fixed ground B; box A is body 1 and
+// the ground body 2, in the text's order, so M⁻¹ = diag(m1⁻¹E, I1⁻¹, 0, 0) and J = [J_A | 0 0].
+// At t = τ the MLCP is one row (eq. 5-8), at t = τ + Δt two, the cached a and the fresh b
+// (eq. 5-19). Each frame shows the state at t with what the step from t solved, tagged with the
+// text's equations (eq. 5-1..5-21): M⁻¹, F_ext, V, each corner's x, N·v (5-4, 5-5), ε and ζ,
+// J, the bounds and λ, f_c and τ_c; two insets magnify the corners. At t = τ it also shows λ1
+// as eq. 5-7 reads literally (ζ, a length, as a velocity). normal_force.png shows Σ λ converging
+// to m g (t → ∞). The text has z up (N = (0, 0, 1)); Lamina, like Box2D, has y up (N = (0, 1, 0)).
 #include <cmath>
 #include <cstdio>
 
@@ -16,34 +17,41 @@
 #include "app/views/contact/stepped_world.h"
 #include "app/views/contact/world_explanation.h"
 #include "app/views/contact/world_view.h"
+#include "ch5/corner_inset.h"
+#include "contact/solvers.h"
 
 namespace {
 
 using namespace lamina;
 using tutorial::fixed;
 
-constexpr double tilt = 0.005;    // θ1(τ), in rad
-constexpr double depth = 0.01;    // how deep corner a starts, in m
-constexpr double magnify = 20.0;  // the corner insets' magnification
-constexpr double inset_half = 0.3;  // half the side of an inset, in m of the frame
-constexpr double at_rest = 1e-3;    // |v| (m/s) and |ω| (rad/s) below this: t → ∞
+constexpr double tilt = 0.005;   // θ1(τ), in rad
+constexpr double depth = 0.01;   // how deep corner a starts, in m
+constexpr int box_a = 0;         // body 1 of the text
+constexpr double at_rest = 1e-3; // |v| (m/s) and |ω| (rad/s) below this: t → ∞
+const Vec3 N(0.0, 1.0, 0.0);     // the ground's normal; the contact plane is N·x ≥ N·c, N·c = 0
 
-// The text's method: Baumgarte bias with no slop, frictionless (chapter 5 has no friction).
-WorldSettings text_settings() {
-  WorldSettings settings;
-  settings.contact.correction = PositionCorrection::baumgarte;
-  settings.contact.slop = 0.0;
-  return settings;
-}
-
-// Fig 5-1: the ground B (body 0) and box A (body 1) with corner a `depth` into the ground.
-World walkthrough_world() {
-  World world(text_settings());
+// Fig 5-1: box A (body 1 of the text, here index 0) with corner a `depth` into the fixed ground
+// B, stepped by the text's method with bias β.
+World walkthrough_world(double beta) {
+  WorldSettings settings = with_solver(WorldSettings(), "text");
+  settings.step.beta = beta;
+  World world(settings);
   const Material frictionless{0.0, 0.0};
-  world.add_static_box(20.0, 0.5, Vec3(0.0, -0.5, 0.0), 0.0, frictionless);
   const double lowest = 0.5 * std::cos(tilt) + 0.5 * std::sin(tilt);  // corner a below x1
   world.add_box(1.0, 0.5, 0.5, Vec3(0.0, lowest - depth, 0.0), tilt, frictionless);
+  world.add_static_box(20.0, 0.5, Vec3(0.0, -0.5, 0.0), 0.0, frictionless);
   return world;
+}
+
+// λ1 at t = τ as eq. 5-7 reads literally: N·v_a ≥ ζ1 with ζ1 = −β ε, a length, taken as the
+// velocity. Lamina asks ζ1/Δt (eq. 4-5); the literal reading is Lamina's step with β Δt for β.
+double literal_lambda() {
+  const double beta = StepSettings().beta, dt = StepSettings().dt;
+  World world = walkthrough_world(beta * dt);
+  WorldReport report;
+  world.step(report);
+  return report.velocity.solution.lambda[0];
 }
 
 // A number for J's entries: "0" for an exact zero, else 4 significant digits.
@@ -59,32 +67,23 @@ std::string pair_text(const Vec3& v, int decimals) {
   return "(" + fixed(v.x(), decimals) + ", " + fixed(v.y(), decimals) + ")";
 }
 
-// A segment clipped to the square |p − centre|∞ ≤ half (Liang–Barsky); false when outside.
-bool clip(Vec2& a, Vec2& b, const Vec2& centre, double half) {
-  double t0 = 0.0, t1 = 1.0;
-  const Vec2 d = b - a;
-  for (int axis = 0; axis < 2; ++axis) {
-    for (double side : {-1.0, 1.0}) {
-      const double p = side * d[axis], q = half - side * (a[axis] - centre[axis]);
-      if (p == 0.0) {
-        if (q < 0.0) return false;
-        continue;
-      }
-      const double t = q / p;
-      if (p < 0.0) t0 = std::max(t0, t);
-      if (p > 0.0) t1 = std::min(t1, t);
-    }
-  }
-  if (t0 > t1) return false;
-  const Vec2 start = a;
-  a = start + t0 * d;
-  b = start + t1 * d;
-  return true;
+// The text's equation numbers for the rows of step k: t = τ has one row (eq. 5-6..5-11); from
+// t = τ + Δt on, a cached a and a fresh b (eq. 5-12..5-21).
+struct RowTags {
+  const char* zeta;
+  const char* J;
+  const char* bounds;
+};
+RowTags tags_of(long step, bool second) {
+  if (step == 0) return {"5-6", "5-8", "5-10"};
+  return second ? RowTags{"5-16", "5-17", "5-18"} : RowTags{"5-13", "5-14", "5-15"};
 }
 
 class Walkthrough : public tutorial::Scene {
  public:
-  Walkthrough() : run_(walkthrough_world()) { run_.step(); }
+  Walkthrough() : run_(walkthrough_world(StepSettings().beta)), literal_(literal_lambda()) {
+    run_.step();
+  }
 
   tutorial::SceneInfo info() const override {
     return {"walkthrough", run_.world().settings().step.dt, 120, 1,
@@ -96,37 +95,38 @@ class Walkthrough : public tutorial::Scene {
     frame.caption = "Ch 5 walk-through · " + moment();
     frame.force_scale = 0.05;
     frame.grounds.push_back({Vec2::Zero(), Vec2::UnitY()});
-    frame.bodies.push_back(view::body_view(box(), run_.world().shape(1), tint(render::palette::sky_blue, 0.35)));
-    for (std::size_t i = 0; i < run_.report().contacts().size(); ++i) {
-      const ContactInfo c = run_.report().contacts()[i];
-      frame.contacts.push_back(view::contact_view(c));
+    frame.bodies.push_back(
+        view::body_view(box(), run_.world().shape(box_a), tint(render::palette::sky_blue, 0.35)));
+    for (std::size_t i = 0; i < pair().size(); ++i) {
+      render::Contact view = view::contact_view(contacts()[i]);
+      // n points from box A into the ground: the force on A is λ along −n = N
+      view.normal = -view.normal;
+      frame.contacts.push_back(view);
       const bool a = corner_name(i) == "a";
-      frame.labels.push_back({c.point.head<2>() + Vec2(a ? -0.06 : 0.06, -0.13),
-                              corner_name(i) + ": λ = " + fixed(c.lambda_normal, 2) + " N",
+      frame.labels.push_back({view.point + Vec2(a ? -0.06 : 0.06, -0.13),
+                              corner_name(i) + ": λ = " + fixed(contacts()[i].lambda_normal, 2) + " N",
                               render::palette::ink,
                               a ? render::Label::Align::right : render::Label::Align::left});
     }
-    for (double side : {-1.0, 1.0}) draw_inset(frame, side);
+    for (double side : {-1.0, 1.0}) inset(frame, side);
     frame.panels.push_back(panel());
     frame.legend_corner = render::Corner::bottom_left;
   }
 
   tutorial::Explanation explain() const override {
-    tutorial::Explanation e = view::explain_world_step(run_.world(), run_.report(), {"ground B", "box A"});
-    e.insert(e.begin(), walkthrough_section());
-    return e;
+    return view::explain_world_step(run_.world(), run_.report(), {"box A", "ground B"});
   }
 
   // normal_force.png: Σ λ over 2 s against m g.
   void write_data(const std::filesystem::path& folder) const override {
-    World world = walkthrough_world();
+    World world = walkthrough_world(StepSettings().beta);
     const double dt = world.settings().step.dt;
-    const double weight = world.bodies()[1].mass * -world.settings().step.gravity.y();
+    const double weight = world.bodies()[box_a].mass * -world.settings().step.gravity.y();
     std::vector<std::vector<double>> rows;
     for (int s = 0; s < 120; ++s) {
       WorldReport report;
       world.step(report);
-      const Vec6 wrench = report.velocity.constraint_wrench(1);
+      const Vec6 wrench = report.velocity.constraint_wrench(box_a);
       rows.push_back({s * dt, wrench[1], wrench[5], weight});
     }
     tutorial::write_plot(folder, {"normal_force",
@@ -140,128 +140,111 @@ class Walkthrough : public tutorial::Scene {
   }
 
  private:
-  const RigidBody& box() const { return run_.bodies_at_t()[1]; }
+  const RigidBody& box() const { return run_.bodies_at_t()[box_a]; }
   long step_index() const { return run_.step_index(); }  // steps since τ
-  const Contact& contact(std::size_t i) const { return run_.report().pairs.at(0).contacts.at(i); }
+  std::vector<Contact> pair() const {
+    std::vector<Contact> points;
+    for (const ContactPair& p : run_.report().pairs) {
+      for (int k = 0; k < p.count; ++k) points.push_back(p.contacts[k]);
+    }
+    return points;
+  }
+  std::vector<ContactInfo> contacts() const { return run_.report().contacts(); }
 
   bool resting() const {
-    return step_index() > 2 && box().v.norm() < at_rest && std::abs(box().angular_velocity.z()) < at_rest;
+    return step_index() > 2 && box().v.norm() < at_rest &&
+           std::abs(box().angular_velocity.z()) < at_rest;
   }
 
   std::string moment() const {
     switch (step_index()) {
       case 0: return "t = τ: one row, the deepest corner a (eq. 5-1..5-11)";
       case 1: return "t = τ + Δt: a from the cache, b fresh, J is 2 × 12 (eq. 5-12..5-21)";
-      case 2: return "t = τ + 2Δt: both corners again, the forces nearly equal";
+      case 2: return "t = τ + 2Δt: both corners again (in 3D a third, Fig 5-3)";
       default:
-        return resting() ? "t → ∞: f_c1 = m1 g, τ_c1 = 0, each corner carries 4.9 N"
+        return resting() ? "t → ∞: f_c1 → m1 g, τ_c1 → 0 (each corner about m g / 2)"
                          : "settling: both corners kept in the cache";
     }
   }
 
-  // r = R1ᵀ (x − x1) of contact i, the anchor the cache keeps in the box's frame (eq. 5-12).
-  Vec3 anchor(std::size_t i) const {
-    const Vec2 r = contact(i).anchor[1];
-    return Vec3(r.x(), r.y(), 0.0);
-  }
-
+  // r = R1ᵀ (x − x1) of contact i, the anchor the cache keeps in box A's frame (eq. 5-12).
+  Vec3 anchor(std::size_t i) const { return lift(pair().at(i).anchor[0]); }
   // x = x1 + R1 r of contact i: the box's corner at t (eq. 5-12).
   Vec3 corner(std::size_t i) const { return box().x + box().rotation * anchor(i); }
-
   // "a" for the corner on the −x side of the box (the text's first contact), "b" for the other.
   std::string corner_name(std::size_t i) const { return anchor(i).x() < 0.0 ? "a" : "b"; }
-
   // The index of the contact at corner `side` (−1: a, +1: b), or −1.
   int contact_at(double side) const {
-    for (std::size_t i = 0; i < run_.report().contacts().size(); ++i) {
+    for (std::size_t i = 0; i < pair().size(); ++i) {
       if ((corner_name(i) == "a") == (side < 0.0)) return static_cast<int>(i);
     }
     return -1;
   }
 
-  // Corner `side` (−1: a, +1: b) magnified `magnify` times in a square above the box.
-  void draw_inset(render::Frame& frame, double side) const {
-    const Vec2 centre(side * 0.55, 1.52);
-    const Vec3 at_corner = box().x + box().rotation * Vec3(side * 0.5, -0.5, 0.0);
-    const Vec2 focus(at_corner.x(), 0.0);  // the ground's surface under the corner
-    auto map = [&](const Vec3& p) { return Vec2(centre + magnify * (p.head<2>() - focus)); };
-    auto segment = [&](Vec2 a, Vec2 b, render::Colour colour, bool dashed) {
-      if (clip(a, b, centre, inset_half)) frame.paths.push_back({{a, b}, colour, dashed});
-    };
-    const Vec2 h(inset_half, inset_half), k(inset_half, -inset_half);
-    frame.paths.push_back(
-        {{centre - h, centre - k, centre + h, centre + k, centre - h}, render::palette::grey, false});
-    segment(map(Vec3(focus.x() - 1.0, 0.0, 0.0)), map(Vec3(focus.x() + 1.0, 0.0, 0.0)),
-            render::palette::ink, false);
-    for (int i = -4; i <= 4; ++i) {  // the ground's hatching
-      const Vec2 top = centre + Vec2(0.15 * i, 0.0);
-      segment(top, top + Vec2(-0.4, -0.4), render::palette::grid, false);
+  // Corner `side` (−1: a, +1: b) magnified in a square above the box.
+  void inset(render::Frame& frame, double side) const {
+    const Vec3 r(side * 0.5, -0.5, 0.0);
+    const double height = (box().x + box().rotation * r).y();  // the corner's N·x, in m
+    ch5::Inset view{Vec2(side * 0.55, 1.62), 0.3, 20.0,
+                    std::string(side < 0.0 ? "corner a" : "corner b") + " ×20", {}};
+    const int i = contact_at(side);
+    if (i >= 0) {
+      const ContactInfo c = contacts()[static_cast<std::size_t>(i)];
+      view.lines[0] = "ε = " + fixed(std::min(c.separation, 0.0), 4) + " m";
+      view.lines[1] = c.cached ? "cached (eq. 5-12)" : "fresh: the deepest";
+      ch5::draw_inset(frame, view, box(), r, &c.point);
+      return;
     }
-    for (int i = 0; i < 4; ++i) {
-      const Vec3 r0(i == 0 || i == 3 ? -0.5 : 0.5, i < 2 ? -0.5 : 0.5, 0.0);
-      const Vec3 r1(i == 0 || i == 1 ? 0.5 : -0.5, i == 0 || i == 3 ? -0.5 : 0.5, 0.0);
-      segment(map(box().x + box().rotation * r0), map(box().x + box().rotation * r1),
-              render::palette::blue, false);
-    }
-    std::string text;
-    if (const int i = contact_at(side); i >= 0) {
-      const ContactInfo contact = run_.report().contacts()[static_cast<std::size_t>(i)];
-      const ContactInfo* c = &contact;
-      const Vec2 at = map(c->point);
-      frame.paths.push_back({{at + Vec2(-0.03, 0.0), at + Vec2(0.03, 0.0)},
-                             render::palette::vermillion, false});
-      frame.paths.push_back({{at + Vec2(0.0, -0.03), at + Vec2(0.0, 0.03)},
-                             render::palette::vermillion, false});
-      text = "ε = " + fixed(std::min(c->separation, 0.0), 4) + " m" +
-             (c->cached ? " (cached)" : " (fresh)");
-    } else if (at_corner.y() < 0.0) {
-      text = "ε = " + fixed(at_corner.y(), 4) + " m, not found: only the deepest";
-    } else {
-      text = "no contact";
-    }
-    frame.labels.push_back({centre + Vec2(0.0, inset_half + 0.08),
-                            std::string(side < 0.0 ? "corner a" : "corner b") + " ×" +
-                                fixed(magnify, 0),
-                            render::palette::ink, render::Label::Align::centre});
-    frame.labels.push_back({centre - Vec2(0.0, inset_half + 0.08), text, render::palette::ink,
-                            render::Label::Align::centre});
+    view.lines[0] = height < 0.0 ? "N·x = " + fixed(height, 4) + " m" : "no contact";
+    view.lines[1] = height < 0.0 ? "in, but not the deepest" : "";
+    ch5::draw_inset(frame, view, box(), r, nullptr);
   }
 
-  // The text's J row of a contact: the box block [Nᵀ ((x − x1) × N)ᵀ], then the ground's 0ᵀ 0ᵀ.
+  // The text's J row of a contact: box A's block [Nᵀ ((x − x1) × N)ᵀ], then the ground's 0ᵀ 0ᵀ.
   std::string j_row(std::size_t i) const {
-    const Vec6 box_block = run_.report().velocity.mlcp.jacobian(contact(i).row, 0);
+    const Vec6 a = run_.report().velocity.mlcp.jacobian(pair().at(i).row, 0);
     std::string text = "[";
-    for (int c = 0; c < 6; ++c) text += (c ? " " : "") + entry(box_block[c]);
+    for (int c = 0; c < 6; ++c) text += (c ? " " : "") + entry(a[c]);
     return text + " | 0 0 0 0 0 0]";
   }
 
   render::Panel panel() const {
     const WorldReport& report = run_.report();
-    const double beta = run_.world().settings().step.beta;
-    const Vec6 wrench = report.velocity.constraint_wrench(1);
+    const double beta = run_.world().settings().step.beta, dt = run_.world().settings().step.dt;
+    const Vec6 wrench = report.velocity.constraint_wrench(box_a);
     const int rows = report.velocity.mlcp.row_count();
+    const bool at_tau = step_index() == 0;
     render::Panel p;
     p.corner = render::Corner::top_left;
-    p.title = "step " + std::to_string(step_index()) + ": rows s = " + std::to_string(rows) +
-              ", J is " + std::to_string(rows) + " × 12";
+    p.title = "step " + std::to_string(step_index()) + ": s = " + std::to_string(rows) +
+              " rows, J is " + std::to_string(rows) + " × 12 (" + (at_tau ? "5-11" : "5-19") + ")";
     p.lines = {"M⁻¹ = diag(m1⁻¹E, I1⁻¹, 0, 0): m1⁻¹ = " + fixed(box().inverse_mass, 1) +
                    ", I1⁻¹ = " + fixed(box().inverse_inertia_world(2, 2), 1) + "  (5-1)",
                "F_ext = [m1 g, 0, 0, 0], m1 g = " +
                    pair_text(box().mass * run_.world().settings().step.gravity, 1) + " N  (5-2)",
                "V: v1 = " + pair_text(box().v, 4) + " m/s, ω1 = " +
-                   fixed(box().angular_velocity.z(), 4) + " rad/s  (5-3)"};
-    for (std::size_t i = 0; i < report.contacts().size(); ++i) {
-      const ContactInfo c = report.contacts()[i];
+                   fixed(box().angular_velocity.z(), 4) + " rad/s  (" + (at_tau ? "5-3" : "3-5") + ")"};
+    for (std::size_t i = 0; i < pair().size(); ++i) {
+      const Contact& c = pair()[i];
       const std::string n = corner_name(i);
+      const RowTags tags = tags_of(step_index(), n == "b");
       const double epsilon = std::min(c.separation, 0.0);
-      p.lines.push_back(n + (c.cached ? " cached" : " fresh") + ": x_" + n + " = " +
+      // eq. 5-4: v_a = v1 + ω1 × (x_a − x1), the corner's velocity at t
+      const Vec3 v = box().v + box().angular_velocity.cross(corner(i) - box().x);
+      p.lines.push_back(n + (c.fresh ? " fresh" : " cached") + ": x_" + n + " = " +
                         pair_text(corner(i), 4) + ", r_" + n + " = " + pair_text(anchor(i), 2) +
                         "  (5-12)");
-      p.lines.push_back("  ε = " + fixed(epsilon, 5) + " m, ζ = −β ε = " +
-                        fixed(-beta * epsilon, 5) + " m  (5-6)");
-      p.lines.push_back("  J = " + j_row(i) + "  (5-8)");
-      p.lines.push_back("  λ = " + fixed(report.velocity.solution.lambda[contact(i).row], 4) +
-                        " N  (5-9..5-11, 5-21)");
+      p.lines.push_back("  N·v_" + n + " = " + fixed(N.dot(v), 4) + " m/s (5-4, 5-5), ε = " +
+                        fixed(epsilon, 5) + " m");
+      p.lines.push_back("  ζ = −βε = " + fixed(-beta * epsilon, 5) + " m (" + tags.zeta +
+                        "); J V ≥ ζ/Δt = " + fixed(-beta * epsilon / dt, 3) + " m/s (4-5)");
+      p.lines.push_back("  J = " + j_row(i) + "  (" + tags.J + ")");
+      p.lines.push_back("  λ ∈ [0, ∞) (" + std::string(tags.bounds) + "): λ = " +
+                        fixed(report.velocity.solution.lambda[c.row], 4) + " N (" +
+                        (at_tau ? "5-9" : "5-21") + ")");
+    }
+    if (at_tau) {
+      p.lines.push_back("  eq. 5-7 read literally (ζ as m/s): λ = " + fixed(literal_, 4) + " N");
     }
     p.lines.push_back("f_c1 = " + pair_text(Vec3(wrench.head<3>()), 4) + " N, τ_c1 = " +
                       fixed(wrench[5], 4) + " N·m  (5-9)");
@@ -269,32 +252,8 @@ class Walkthrough : public tutorial::Scene {
     return p;
   }
 
-  // The text's quantities of this step, for --explain.
-  tutorial::Section walkthrough_section() const {
-    const WorldReport& report = run_.report();
-    const double beta = run_.world().settings().step.beta;
-    const Vec6 wrench = report.velocity.constraint_wrench(1);
-    tutorial::Section s{"walk-through (the text has z up, N = (0, 0, 1); Lamina y up, N = (0, 1, 0))",
-                        {}};
-    for (std::size_t i = 0; i < report.contacts().size(); ++i) {
-      const ContactInfo c = report.contacts()[i];
-      const std::string n = corner_name(i);
-      const double epsilon = std::min(c.separation, 0.0);
-      s.quantities.push_back({"x_" + n, "5-12", c.cached ? "corner x1 + R1 r, re-placed from the cache"
-                                                         : "corner, fresh (deepest point)",
-                              tutorial::json_of(corner(i)), "m"});
-      s.quantities.push_back({"r_" + n, "5-12", "R1ᵀ (x_" + n + " − x1), box frame",
-                              tutorial::json_of(anchor(i)), "m"});
-      s.quantities.push_back({"ε_" + n, "5-6", "min(N·x_" + n + " − N·c, 0)", epsilon, "m"});
-      s.quantities.push_back({"ζ_" + n, "5-6", "−β ε", -beta * epsilon, "m"});
-    }
-    s.quantities.push_back({"f_c1", "5-9", "Σ λ_i N", tutorial::json_of(Vec3(wrench.head<3>())), "N"});
-    s.quantities.push_back({"τ_c1", "5-9", "Σ (x_i − x1) × λ_i N", tutorial::json_of(Vec3(wrench.tail<3>())),
-                            "N·m"});
-    return s;
-  }
-
   view::SteppedWorld run_;
+  double literal_;  // λ1 at t = τ, eq. 5-7 read literally, in N
 };
 
 }  // namespace
@@ -304,7 +263,7 @@ int main(int argc, char** argv) {
       "05_walkthrough",
       "ch5",
       "Chapter 5: the walk-through at t = τ, τ+Δt, τ+2Δt and t → ∞ with the numbers of eq. "
-      "5-1..5-21, and the normal force converging to m g",
+      "5-1..5-21, by the text's own method, and the normal force converging to m g",
       {render::Overlay::contacts, render::Overlay::normals, render::Overlay::forces,
        render::Overlay::centres}};
   return tutorial::run_tutorial(argc, argv, info, {tutorial::scene<Walkthrough>()});

@@ -7,6 +7,7 @@
 #include "app/views/contact/stepped_world.h"
 #include "app/views/contact/world_explanation.h"
 #include "app/views/contact/world_view.h"
+#include "contact/solvers.h"
 
 namespace lamina::ch4 {
 namespace {
@@ -32,7 +33,8 @@ class FrictionRamp : public tutorial::Scene {
   static constexpr double start = 1.6;       // the box's start up the slope from the centre, in m
   inline static const Vec2 box_half{0.35, 0.25};
 
-  explicit FrictionRamp(const tutorial::Options& o) : world_(ramps_world(!o.no_cache)) {
+  explicit FrictionRamp(const tutorial::Options& o)
+      : world_(ramps_world(o.solver.value_or("pgs"), !o.no_cache)) {
     world_.step();
   }
 
@@ -42,7 +44,8 @@ class FrictionRamp : public tutorial::Scene {
   void step() override { world_.step(); }
 
   void draw(render::Frame& frame) const override {
-    frame.caption = "Friction rows, bounds ±μ λc: sticks when tan θ < μ, slides when tan θ > μ";
+    frame.caption = "Friction, bounds ±μ λc: sticks when tan θ < μ, slides when tan θ > μ · solver " +
+                    world_.world().settings().solver;
     frame.force_scale = 0.35;
     for (std::size_t i = 0; i < ramps_.size(); ++i) {
       const int ramp = static_cast<int>(2 * i), box = ramp + 1;
@@ -69,8 +72,8 @@ class FrictionRamp : public tutorial::Scene {
            render::Corner::bottom_right}};
 
   // Each ramp (a static box, body 2i) with a box on it (body 2i + 1), released at rest.
-  static World ramps_world(bool cache) {
-    WorldSettings settings;
+  static World ramps_world(const std::string& solver, bool cache) {
+    WorldSettings settings = with_solver(WorldSettings(), solver);
     settings.cache.enabled = cache;
     World world(settings);
     const Material material{mu, 0.0};
