@@ -67,7 +67,7 @@ TEST_SUITE("AngularIntegration") {
   TEST_CASE("the quaternion stays unit over 10⁴ steps of fast spin (eq. 2-6 alone would drift)") {
     // ω̂ q is orthogonal to q (Re(q* ω̂ q) = 0 for a pure ω̂), so the text's update q + ½ ω̂ q Δt
     // grows |q|² by exactly (1 + |ω|²Δt²/4) every step: |q_n| = (1 + |ω|²Δt²/4)^(n/2). The engine
-    // renormalises after each step (DIGEST, "Where the seed is wrong", item 3).
+    // renormalises after each step (docs/the-text.md, "Where the text is wrong or silent").
     std::mt19937 rng(208);
     const double dt = 1.0 / 240.0;
     const int n = 10000;

@@ -145,7 +145,7 @@ Outcome run_lamina(const Scene& scene, PositionCorrection correction) {
   out.mass = box.mass;
   for (const ContactInfo& c : world.contacts()) {
     out.points.push_back(Vec2(c.point.x() - out.x, c.point.y() - out.y));
-    // DIGEST "Units": λ is a force; the impulse over the step is λ Δt
+    // λ is a force, as in the text; the impulse over the step is λ Δt, as Box2D reports
     out.impulses.push_back(c.lambda_normal * scene.step.dt);
     out.frictions.push_back(c.lambda_tangent * scene.step.dt);
   }

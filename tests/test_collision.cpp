@@ -1,4 +1,4 @@
-// Chapter 4's collision detection (beyond the text, DIGEST item 6): the deepest point of each
+// Chapter 4's collision detection (beyond the text, which omits it): the deepest point of each
 // pair type against analytic answers, the separating axis, touching, ties, and the broad phase.
 #include <doctest/doctest.h>
 

@@ -229,7 +229,7 @@ TEST_SUITE("Contact") {
     const double tilt = std::abs(planar_angle(world.bodies()[1].q));
     // Each corner settles anywhere in [0, slop] deep: sin(tilt) is at most slop / 1 m.
     CHECK(tilt <= std::asin(settings.contact.slop) + 1e-9);
-    // Split impulse (the default) corrects both corners to the same depth: no tilt (notes fix 2).
+    // Split impulse (the default) corrects both corners to the same depth: no tilt.
     World split = box_on_ground(WorldSettings(), 2.0, 0.3);
     run(split, 600);
     CHECK(std::abs(planar_angle(split.bodies()[1].q)) < 1e-5);

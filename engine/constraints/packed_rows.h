@@ -5,8 +5,9 @@
 //
 // The three products every use of the MLCP is made of are defined here, once:
 //   a = B λ        transpose_multiply  (the text's TransposeMultiply, scaled by λ[i]: the text
-//                                       writes λ[b1], λ[b2]; DIGEST item 1)
-//   J_i · X        row_dot             (the text's Multiply, guarding Jmap[1] = −1; item 2)
+//                                       writes λ[b1], λ[b2], indexing λ by body)
+//   J_i · X        row_dot             (the text's Multiply, guarding Jmap[1] = −1, which the
+//                                       text's PGS loop does not; docs/the-text.md, chapter 3)
 //   F_c = Jᵀ λ     for_each_force      (eq. 3-11)
 // Mlcp (mlcp.h) assembles and views the rows; PgsSolver (pgs_solver.h) sweeps them.
 #pragma once

@@ -1,5 +1,5 @@
 // Broad phase: which pairs of bodies may touch, by sort and sweep on x (beyond the text, which
-// leaves collision detection out; DIGEST item 6).
+// leaves collision detection to its references [9] and [10]; docs/the-text.md).
 //
 //   1. sort the bodies by the left edge min.x of their bounding boxes;
 //   2. sweep left to right: body i can only overlap the bodies after it whose min.x ≤ max.x of i;

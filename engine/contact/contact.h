@@ -60,7 +60,8 @@ void place(Contact& contact, const Pose2& pose1, const Pose2& pose2);
 Vec2 placed_point(const Contact& contact, const Pose2& pose1, const Pose2& pose2);
 
 // Moves the reference body's anchor under the incident body's point, so the drift is zero and
-// the separation unchanged (notes fix 3: a sliding contact is re-anchored, not dropped).
+// the separation unchanged: a sliding contact is re-anchored, not dropped, since dropping can
+// lose both points of a pair in one step and only one comes back per step.
 void reanchor(Contact& contact, const Pose2& pose1, const Pose2& pose2);
 
 // The reference body's point of a contact, world frame.

@@ -3,7 +3,7 @@
 // The narrow phase finds one point per pair per step, the deepest. A box resting on the ground
 // needs two. The cache remembers last step's points in both bodies' frames and, every step:
 //   1. re-places each cached point from its anchors (eq. 5-12) and re-measures C (eq. 4-1);
-//      a point whose anchors slid apart by more than drift_limit is re-anchored (notes fix 3);
+//      a point whose anchors slid apart by more than drift_limit is re-anchored, not dropped;
 //      a point is dropped once C > keep_margin, or when re-anchoring moves it off the
 //      reference body's surface (a box sliding off a ledge);
 //   2. merges the fresh deepest point: within merge_distance of a cached point it replaces that

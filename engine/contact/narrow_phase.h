@@ -1,6 +1,6 @@
 // Narrow phase: the deepest point of a pair, as the text's collision detection returns it
-// (chapter 4, Fig 4-2: "only the single deepest point"). The text leaves the algorithm out
-// (DIGEST item 6); Lamina's is planar and written for clarity.
+// (chapter 4, Fig 4-2: "only the single deepest point"). The text leaves the algorithm to its
+// references [9] and [10]; Lamina's is planar and written for clarity.
 //
 //   point      the incident body's point deepest inside the reference body
 //   normal n   unit, from body 1 to body 2 (the n1 of eq. 4-1)

@@ -1,6 +1,6 @@
 // The plane of Lamina's scenes: 2D vectors and a body's pose in the x–y plane.
 //
-// Collision detection is written in 2D for clarity (the text leaves it out, DIGEST item 6);
+// Collision detection is written in 2D for clarity (the text leaves it out: docs/the-text.md);
 // everything it returns is lifted back to the 3D core with z = 0, so the out-of-plane
 // components of every point, normal and Jacobian block are exactly zero.
 //

@@ -19,7 +19,7 @@ ContactState contact_state(const Scene& scene, const ContactInfo& c, double dt) 
           plane(c.point),
           plane(c.normal),
           unsigned_zero(-c.separation),
-          unsigned_zero(c.lambda_normal * dt),  // DIGEST item 4: the impulse over the step is λ Δt
+          unsigned_zero(c.lambda_normal * dt),  // λ is a force; the impulse over the step is λ Δt
           unsigned_zero(c.lambda_tangent * dt),
           c.cached};
 }

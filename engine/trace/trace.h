@@ -3,7 +3,7 @@
 //
 //   bodies    the dynamic bodies after the step (static ones never move and are left out)
 //   contacts  the contacts solved in the step, each with its normal n from the first named body
-//             to the second and its impulses λ Δt (N·s, comparable with Box2D's; DIGEST item 4)
+//             to the second and its impulses λ Δt (N·s, comparable with Box2D's; λ is a force)
 #pragma once
 
 #include <array>
