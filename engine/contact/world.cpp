@@ -136,7 +136,7 @@ void World::advance(WorldReport* report) {
 }
 
 void World::apply_forces() {
-  // eq. 5-2: F_ext = m g (a static body has m = 0), on top of forces applied since the last step
+  // eq. 5-2: F_ext = m g on the dynamic bodies, on top of forces applied since the last step
   apply_gravity(bodies_, settings_.step.gravity);
 }
 

@@ -34,8 +34,10 @@ void integrate(RigidBody& body, double dt, Integration scheme) {
 }
 
 void apply_gravity(std::vector<RigidBody>& bodies, const Vec3& gravity) {
-  // eq. 5-2: F_ext = m g
-  for (RigidBody& body : bodies) body.force += body.mass * gravity;
+  for (RigidBody& body : bodies) {
+    // eq. 5-2: F_ext = [m1 g, 0, 0, 0]: a fixed body is not pushed by its weight
+    if (!body.is_static()) body.force += body.mass * gravity;
+  }
 }
 
 void step_unconstrained(std::vector<RigidBody>& bodies, const Vec3& gravity, double dt,

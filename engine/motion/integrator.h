@@ -17,7 +17,7 @@ enum class Integration {
 // The accumulators are left as they are; the caller clears them.
 void integrate(RigidBody& body, double dt, Integration scheme = Integration::semi_implicit);
 
-// Adds gravity m g to every body's force (F_ext of eq. 5-2; a static body has m = 0).
+// Adds gravity m g to every dynamic body's force (F_ext of eq. 5-2; a static body gets none).
 void apply_gravity(std::vector<RigidBody>& bodies, const Vec3& gravity);
 
 // The chapter-2 world step: gravity, integrate each body, clear the forces.

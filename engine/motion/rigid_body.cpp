@@ -1,6 +1,7 @@
 #include "motion/rigid_body.h"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "kinematics/inertia.h"
@@ -52,7 +53,11 @@ RigidBody RigidBody::dynamic_body(double mass, const Mat3& inertia_body, const V
 
 RigidBody RigidBody::static_body(const Vec3& x, const Quat& q) {
   require_pose(x, q);
-  return placed(x, q);
+  RigidBody body = placed(x, q);
+  // eq. 5-1: infinite mass and inertia; only their inverses, 0, enter the step
+  body.mass = std::numeric_limits<double>::infinity();
+  body.inertia_body = std::numeric_limits<double>::infinity() * Mat3::Identity();
+  return body;
 }
 
 void RigidBody::apply_force_at(const Vec3& f, const Vec3& p) {
@@ -73,7 +78,11 @@ void RigidBody::update_derived() {
   inverse_inertia_world = world_inertia(rotation, inverse_inertia_body);
 }
 
-Mat3 RigidBody::inertia_world() const { return world_inertia(rotation, inertia_body); }
+Mat3 RigidBody::inertia_world() const {
+  // R (∞ E) Rᵀ = ∞ E, which the product would spoil with ∞ × 0 = NaN
+  if (is_static()) return inertia_body;
+  return world_inertia(rotation, inertia_body);
+}
 
 bool RigidBody::has_finite_state() const {
   return x.allFinite() && q.coeffs().allFinite() && v.allFinite() && angular_velocity.allFinite();

@@ -6,9 +6,11 @@
 namespace lamina {
 
 struct RigidBody {
-  double mass = 0.0;                          // m, in kg; 0 for a static body
+  // A static body is the text's fixed body of infinite mass (eq. 5-1): what the step uses of it
+  // is m⁻¹ = 0 and I⁻¹ = 0; its m and I0 are +∞ (diagonal), to be read, never multiplied.
+  double mass = 0.0;                          // m, in kg; +∞ for a static body
   double inverse_mass = 0.0;                  // m⁻¹, in 1/kg; 0 for a static body (eq. 5-1)
-  Mat3 inertia_body = Mat3::Zero();           // I0, body-frame inertia tensor, in kg·m²
+  Mat3 inertia_body = Mat3::Zero();           // I0, body-frame inertia tensor, in kg·m²; +∞ E static
   Mat3 inverse_inertia_body = Mat3::Zero();   // I0⁻¹; zero for a static body (eq. 5-1)
 
   Vec3 x = Vec3::Zero();                      // centre of mass, world frame, in m
@@ -37,7 +39,7 @@ struct RigidBody {
   // Recomputes R (eq. 2-7) and I⁻¹ (eq. 2-8) from q.
   void update_derived();
 
-  // I = R I0 Rᵀ (eq. 1-37).
+  // I = R I0 Rᵀ (eq. 1-37); +∞ E for a static body.
   Mat3 inertia_world() const;
   bool is_static() const { return inverse_mass == 0.0; }
   // True while x, q, v and ω are all finite numbers: a step that breaks this has diverged.

@@ -45,6 +45,15 @@ Section body_at_t(const std::string& name, const RigidBody& b, const Vec3& gravi
   return s;
 }
 
+// A fixed body: the text's infinite mass, of which the step uses only the inverses (eq. 5-1).
+Section fixed_body(const std::string& name, const RigidBody& b) {
+  return {name + " (fixed)",
+          {{"x", "", "centre", json_of(b.x), "m"},
+           {"m", "5-1", "mass: infinite", "∞", "kg"},
+           {"m⁻¹", "5-1", "inverse mass", b.inverse_mass, "1/kg"},
+           {"I⁻¹", "5-1", "inverse inertia", json_of(b.inverse_inertia_world), "1/(kg·m²)"}}};
+}
+
 Section contact_section(int index, const ContactPair& pair, const Contact& c,
                         const std::vector<std::string>& names, double dt) {
   const std::string origin = c.fresh ? "this step's deepest point (Fig 4-2)"
@@ -83,7 +92,8 @@ Explanation explain_world_step(const World& world, const WorldReport& report,
   const double dt = world.settings().step.dt;
   Explanation e;
   for (std::size_t i = 0; i < at_t.size(); ++i) {
-    if (!at_t[i].is_static()) e.push_back(body_at_t(names.at(i), at_t[i], world.settings().step.gravity));
+    e.push_back(at_t[i].is_static() ? fixed_body(names.at(i), at_t[i])
+                                    : body_at_t(names.at(i), at_t[i], world.settings().step.gravity));
   }
   int index = 0;
   for (const ContactPair& pair : report.pairs) {
