@@ -1,5 +1,6 @@
 // Fig 3-1 in motion: a body held on an incline by one equality row (chapter 3, eq. 3-1..3-4,
-// 3-14, 3-16), on a planar scene (x–y, y up).
+// 3-14, 3-16), and Fig 3-2: a body that may leave it, one inequality row (eq. 3-17..3-22), on
+// planar scenes (x–y, y up).
 #include <doctest/doctest.h>
 
 #include <array>
@@ -81,5 +82,49 @@ TEST_SUITE("Incline") {
     CHECK(std::abs(report.slack()[0]) <= 1e-12);
     // after the step ε is (1 − β) ε (eq. 3-14 with Δt written out, constraint.h)
     CHECK((bodies[0].x - p).dot(N) == doctest::Approx(0.8 * epsilon).epsilon(1e-9));
+  }
+
+  TEST_CASE("Fig 3-2: a box thrown off a one-sided incline flies free, lands on it and slides") {
+    // m = 2 kg on a 30° line, thrown at 3 m/s along N and 1 m/s down the slope; Δt = 1/60 s
+    const double theta = M_PI / 6.0;
+    const Vec3 N(std::sin(theta), std::cos(theta), 0.0);
+    const Vec3 downhill(std::cos(theta), -std::sin(theta), 0.0);
+    const Vec3 p(0.0, 1.0, 0.0);
+    std::vector<RigidBody> bodies{box_body(4.0, 0.5, 0.25, p)};
+    bodies[0].v = 3.0 * N + downhill;
+    ConstraintList constraints;
+    constraints.push_back(std::make_unique<InclineConstraint>(0, p, N, InclineKind::one_sided));
+    const ConstrainedStepSettings settings;
+    WarmStart warm_start;
+    // free flight under eq. 2-3, 2-5: after k steps v·N = 3 − k g cos θ Δt and
+    // C = Δt (3k − g cos θ Δt k(k+1)/2), which would turn negative once k + 1 > 6/(g cos θ Δt)
+    // = 42.4: step 41 is the first the line must act in
+    const int landing = static_cast<int>(std::floor(6.0 / (g * std::cos(theta) * settings.step.dt))) - 1;
+    for (int k = 0; k < 90; ++k) {
+      StepReport report;
+      constrained_step(bodies, constraints, settings, warm_start, &report);
+      const double lambda = report.solution.lambda[0], W = report.slack()[0];
+      CHECK(report.mlcp.bounds(0, &lambda) == std::array<double, 2>{0.0, infinity});
+      // eq. 3-21: λ ≥ 0, W ≥ 0, λ W = 0. One row is solved exactly in one sweep, so W is
+      // round-off: ≤ 1e-9 m/s² against terms up to 200 m/s² (in flight W = (v(t+Δt)·N + C/Δt)/Δt
+      // reaches 180 m/s²)
+      CHECK(lambda >= 0.0);
+      CHECK(W >= -1e-9);
+      CHECK(std::min(lambda, W) <= 1e-9);
+      // eq. 3-17: never below the line (C ≥ 0 to 1e-12 m, rounding)
+      CHECK((bodies[0].x - p).dot(N) >= -1e-12);
+      if (k < landing) {
+        CHECK(lambda == 0.0);  // in the air the line does not pull (eq. 3-21: λ = 0, W > 0)
+        CHECK(W > 0.0);
+      } else if (k <= landing + 1) {
+        // the landing takes two steps: the first lets the gap close exactly (ζ = −C/Δt,
+        // eq. 3-18), the second, from C = 0, stops what is left of the approach (ζ = 0, eq. 3-19)
+        CHECK(lambda > 2.0 * g * std::cos(theta));
+        MESSAGE("Fig 3-2: landing, step " << k << ": λ = " << lambda << " N");
+      } else {
+        // on the line: λ = m g cos θ (analytic, as Fig 3-1) and the box slides
+        CHECK(relative_error(lambda, 2.0 * g * std::cos(theta)) <= 1e-9);
+      }
+    }
   }
 }

@@ -7,8 +7,8 @@
 
 namespace lamina {
 
-InclineConstraint::InclineConstraint(int body, const Vec3& p, const Vec3& normal)
-    : body_(body), p_(p), normal_(normal) {
+InclineConstraint::InclineConstraint(int body, const Vec3& p, const Vec3& normal, InclineKind kind)
+    : body_(body), p_(p), normal_(normal), kind_(kind) {
   const std::string what = "incline constraint";
   require(body >= 0, what + ": needs a body index ≥ 0, got " + std::to_string(body));
   require(p.allFinite(), what + ": point p is not finite");
@@ -22,8 +22,14 @@ void InclineConstraint::write_rows(const std::vector<RigidBody>& bodies, double 
   ConstraintRow row = point_row(bodies, Anchor{world, p_}, Anchor{body_, Vec3::Zero()}, normal_);
   // eq. 3-13: ε = (x − p) · N
   const double C = (bodies[body_].x - p_).dot(normal_);
-  // eq. 3-14
-  row.zeta = equality_bias(C, dt, beta);
+  if (kind_ == InclineKind::bilateral) {
+    // eq. 3-14
+    row.zeta = equality_bias(C, dt, beta);
+  } else {
+    // eq. 3-17..3-19: C ≥ 0, and eq. 3-26 (ii): a one-sided row
+    row.zeta = inequality_bias(C, dt, beta);
+    row.lambda_min = 0.0;
+  }
   rows.push_back(row);
 }
 

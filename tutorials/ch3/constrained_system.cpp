@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "app/views/constraints/mlcp_explanation.h"
+#include "ch3/text_pgs_explanation.h"
 
 namespace lamina::ch3 {
 
@@ -33,6 +34,7 @@ tutorial::Explanation explain_system(const System& s, const std::string& title,
     e.push_back(row);
   }
   e.push_back(view::sweeps_section(s.report, title + ": projected Gauss-Seidel (eq. 3-24)"));
+  e.push_back(text_pgs_section(s, title + ": the same step by the text's Projected Gauss-Seidel"));
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
     tutorial::Section after = view::body_section(title + ": " + bodies[b] + " at t + Δt", s.bodies[b],
                                                  {"2-5", "2-6", "2-3", "2-4"});

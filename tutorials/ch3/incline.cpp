@@ -3,28 +3,23 @@
 #include <cmath>
 
 #include "ch3/constrained_system.h"
+#include "ch3/incline_geometry.h"
 #include "constraints/incline_constraint.h"
-#include "app/views/motion/body_view.h"
 
 namespace lamina::ch3 {
 namespace {
 
-constexpr double incline_angle = M_PI / 6.0;  // θ, 30°
-const Vec2 box_half(0.4, 0.25);               // box half extents, in m
-constexpr double box_density = 5.0;           // kg/m²: m = 2 kg
-const Vec2 slope_top(0.0, 3.6);               // a point of the incline's surface, in m
-const Vec2 downhill(std::cos(incline_angle), -std::sin(incline_angle));  // unit, along the slope
-const Vec2 incline_normal(std::sin(incline_angle), std::cos(incline_angle));  // N
-constexpr double incline_force_scale = 0.05;                                  // m of arrow per N
+using incline::downhill;
+using incline::slope_top;
+constexpr double incline_force_scale = 0.05;  // m of arrow per N
 
 class Incline : public tutorial::Scene {
  public:
   Incline() {
     // The constraint holds the centre of mass on the line through p, half a box above the surface.
-    p_ = spatial(slope_top + box_half.y() * incline_normal);
-    const Vec3 start = p_ + spatial(1.0 * downhill);
-    s_.bodies.push_back(box_body(box_density, box_half.x(), box_half.y(), start, -incline_angle));
-    s_.constraints.push_back(std::make_unique<InclineConstraint>(0, p_, spatial(incline_normal)));
+    s_.bodies.push_back(incline::box_on_line(1.0));
+    s_.constraints.push_back(
+        std::make_unique<InclineConstraint>(0, incline::line_point(), spatial(incline::normal)));
     step();
   }
 
@@ -32,28 +27,23 @@ class Incline : public tutorial::Scene {
     return {"incline", 1.0 / 60.0, 46, 2, {Vec2(-0.6, -0.8), Vec2(8.6, 4.4)}};
   }
 
-  void step() override { s_.step({error(s_.bodies[0])}); }
+  void step() override { s_.step({incline::error(s_.bodies[0])}); }
 
   void draw(render::Frame& frame) const override {
     const RigidBody& box = s_.at_t[0];
     frame.caption = "Ch 3 · Fig 3-1: a box held on an incline, (x − p)·N = 0 (eq. 3-1..3-4)";
     frame.force_scale = incline_force_scale;
     frame.velocity_scale = 0.15;
-    frame.grounds.push_back({slope_top, incline_normal});
     // θ between the slope and the horizontal, where the surface meets y = 0
-    const double foot = slope_top.y() / std::tan(incline_angle);
+    const double foot = slope_top.y() / std::tan(incline::angle);
     frame.paths.push_back({{Vec2(foot - 1.6, 0.0), Vec2(foot + 1.8, 0.0)}, grey, true});
     frame.labels.push_back({Vec2(foot + 1.0, 0.12), "θ = 30°", ink, render::Label::Align::centre});
     // p and N, drawn on the line the constraint holds the centre on
-    const Vec2 p = planar(p_);
-    frame.paths.push_back({{p - 0.5 * downhill, p + 7.2 * downhill}, grey, true});
-    frame.arrows.push_back({p, p + 0.6 * incline_normal, ink, "N", std::nullopt});
-    frame.labels.push_back({p - Vec2(0.12, 0.05), "p", ink, render::Label::Align::right});
-    frame.bodies.push_back(
-        view::box_view(box, box_half, tint(render::palette::sky_blue, 0.35)));
+    incline::draw_line(frame, 7.2);
+    frame.bodies.push_back(incline::box_view(box));
     const Vec2 x = planar(box.x);
     const Vec2 weight = planar(box.mass * gravity),
-               support = planar(lambda() * spatial(incline_normal));
+               support = planar(lambda() * spatial(incline::normal));
     const double k = incline_force_scale;
     frame.arrows.push_back({x, x + k * weight, vermillion, "m g", render::Overlay::forces});
     frame.arrows.push_back({x, x + k * support, blue, "λN", render::Overlay::forces});
@@ -74,7 +64,6 @@ class Incline : public tutorial::Scene {
 
  private:
   double lambda() const { return s_.report.solution.lambda[0]; }
-  double error(const RigidBody& box) const { return (box.x - p_).dot(spatial(incline_normal)); }
   static double speed(const RigidBody& box) { return planar(box.v).dot(downhill); }
 
   render::Panel panel() const {
@@ -84,8 +73,8 @@ class Incline : public tutorial::Scene {
     panel.corner = render::Corner::top_right;
     panel.title = "The incline in numbers";
     panel.lines = {"m = " + fixed(box.mass, 1) + " kg   θ = 30°   N = (" +
-                       fixed(incline_normal.x()) + ", " + fixed(incline_normal.y()) + ")",
-                   "C = (x − p)·N     = " + scientific(error(box)) + " m  (3-1)"};
+                       fixed(incline::normal.x()) + ", " + fixed(incline::normal.y()) + ")",
+                   "C = (x − p)·N     = " + scientific(incline::error(box)) + " m  (3-1)"};
     const StepReport& r = s_.report;
     panel.lines.insert(
         panel.lines.end(),
@@ -93,15 +82,14 @@ class Incline : public tutorial::Scene {
          "ζ = −βC/Δt       = " + fixed(r.mlcp.zeta(0)) + " m/s  (3-14)",
          "η = ζ/Δt − J(V/Δt + M⁻¹F) = " + fixed(r.mlcp.eta(0)) + " m/s²  (3-16)",
          "λ = η / (J M⁻¹ Jᵀ) = " + fixed(lambda()) + " N  (3-3, 3-4)",
-         "m g cos θ        = " + fixed(box.mass * g * std::cos(incline_angle)) + " N  (theory)",
+         "m g cos θ        = " + fixed(box.mass * g * std::cos(incline::angle)) + " N  (theory)",
          "a along slope    = " + fixed((speed(s_.bodies[0]) - speed(box)) / dt) + " m/s²",
-         "g sin θ          = " + fixed(g * std::sin(incline_angle)) + " m/s²  (theory)",
+         "g sin θ          = " + fixed(g * std::sin(incline::angle)) + " m/s²  (theory)",
          "arrows: " + fixed(incline_force_scale, 2) + " m per N"});
     return panel;
   }
 
   System s_;
-  Vec3 p_;  // p, a point of the line the centre is held on, in m
 };
 
 }  // namespace
