@@ -17,7 +17,7 @@ namespace lamina::render::testing {
 inline constexpr FrameSize test_size{320, 180};
 
 // Bodies, ground, a joint, fresh and cached contacts with forces, arrows, a path, labels,
-// a panel and the legend: every painter has work to do.
+// 3D items, a panel and the legend: every painter has work to do.
 inline Frame full_frame() {
   Frame f;
   f.caption = "Fig 4-3  test frame";
@@ -41,6 +41,12 @@ inline Frame full_frame() {
   f.contacts.push_back({Vec2(0.5, 0.0), Vec2(0.0, 1.0), 25.0, Vec2(1.0, 0.0), 0.0, true});
   f.arrows.push_back({Vec2(-2.0, 2.0), Vec2(-1.0, 2.5), palette::vermillion, "F", std::nullopt});
   f.labels.push_back({Vec2(0.0, 2.5), "ω × r", palette::ink, Label::Align::centre});
+  // 3D items, drawn by the default cabinet projection, clear of the box.
+  f.paths3.push_back(
+      {{Vec3(2.5, 2.5, 0.0), Vec3(3.0, 2.5, 0.0), Vec3(3.0, 2.5, 1.0)}, palette::grey, true});
+  f.arrows3.push_back({Vec3(2.8, 0.3, 0.0), Vec3(2.8, 0.3, 1.0), palette::reddish_purple, "τ"});
+  f.points3.push_back({Vec3(-2.5, 2.5, 0.5), palette::vermillion, "rᵢ"});
+  f.labels3.push_back({Vec3(3.0, 2.5, 1.0), "z", palette::ink, Label::Align::right});
   f.panels.push_back({Corner::top_left, "numbers", palette::blue, {"λ = 40.000 N", "W = 0"}});
   f.legend.push_back({LegendEntry::Sample::swatch, box.fill, "box"});
   return f;

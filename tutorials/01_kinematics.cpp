@@ -1,13 +1,20 @@
-// Chapter 1 — kinematics. A box turns about z at constant ω while its centre drifts at v.
-// Each frame draws the particle velocities v_i = v + ω × r_i (eq. 1-30) at the corners, the
-// decomposition v + ω × r₁ at corner 1, and the rotation as the text builds it: Rodrigues
-// (eq. 1-4) and the quaternion (eq. 1-19, 1-22). The motion is prescribed, not integrated:
-// chapter 2 integrates.
+// Chapter 1 — kinematics. Three scenes; the motion is prescribed, not integrated (chapter 2
+// integrates):
+//   rodrigues_frame   Fig 1-1 in space: v turned about the unit axis d in the frame a, b, d
+//                     (eq. 1-4, 1-6, 1-9; ch1/rodrigues_frame.h).
+//   turning_particle  Fig 1-2, 1-3 in space: a particle r_i of a turning body, ṙ_i = ω × r_i and
+//                     |ṙ_i| = |sin α| |r_i| |ω| (eq. 1-27, 1-28; ch1/turning_particle.h).
+//   rotating_box      a box turns about z at constant ω while its centre drifts at v. Each frame
+//                     draws the particle velocities v_i = v + ω × r_i (eq. 1-30) at the corners,
+//                     the decomposition v + ω × r₁ at corner 1, and the rotation as the text
+//                     builds it: Rodrigues (eq. 1-4) and the quaternion (eq. 1-19, 1-22).
 #include <array>
 #include <cmath>
 
 #include "app/harness/format.h"
 #include "app/harness/tutorial.h"
+#include "ch1/rodrigues_frame.h"
+#include "ch1/turning_particle.h"
 #include "kinematics/inertia.h"
 #include "kinematics/momentum.h"
 #include "kinematics/particle.h"
@@ -174,7 +181,10 @@ int main(int argc, char** argv) {
   const tutorial::TutorialInfo info{
       "01_kinematics",
       "ch1",
-      "Chapter 1: a turning box, its particle velocities and its rotation as R and q",
+      "Chapter 1: Rodrigues' frame (Fig 1-1), a turning particle (Fig 1-2, 1-3), and a turning "
+      "box with its particle velocities and its rotation as R and q",
       {render::Overlay::velocities, render::Overlay::centres}};
-  return tutorial::run_tutorial(argc, argv, info, {tutorial::scene<RotatingBox>()});
+  return tutorial::run_tutorial(argc, argv, info,
+                                {ch1::rodrigues_frame_scene(), ch1::turning_particle_scene(),
+                                 tutorial::scene<RotatingBox>()});
 }

@@ -1,14 +1,23 @@
-// Chapter 2 — unconstrained motion. The same spinning box is thrown twice, side by side: on the
-// left the explicit variant (x moves with v(t)), on the right the text's semi-implicit step
-// (eq. 2-5: x moves with v(t+Δt)). Under constant gravity both leave the exact parabola by
-// ½ g Δt t, in opposite directions, and the total energy drifts by ±½ m g² Δt t; the plot
-// energy.png shows it.
+// Chapter 2 — unconstrained motion. Three scenes:
+//   forces_at_points  Fig 2-1: three forces at points of a body add up to F and τ (eq. 1-31..1-33),
+//                     which move it (ch2/forces_at_points.h).
+//   thrown_box        the same spinning box thrown twice, side by side: on the left the explicit
+//                     variant (x moves with v(t)), on the right the text's semi-implicit step
+//                     (eq. 2-5: x moves with v(t+Δt)). Under a constant force both are first
+//                     order and neither is the more stable: both leave the exact parabola by
+//                     ½ g Δt t, in opposite directions, and the total energy drifts by
+//                     ±½ m g² Δt t; the plot energy.png shows it.
+//   spring            where the text's "implicit is more stable" shows: on a spring explicit
+//                     Euler's energy grows by 1 + ω²Δt² a step, eq. 2-5's stays bounded; the plot
+//                     spring_energy.png (ch2/spring.h).
 #include <array>
 
 #include "app/views/motion/body_view.h"
 #include "app/harness/format.h"
 #include "app/harness/plot.h"
 #include "app/harness/tutorial.h"
+#include "ch2/forces_at_points.h"
+#include "ch2/spring.h"
 #include "kinematics/momentum.h"
 #include "motion/integrator.h"
 
@@ -192,7 +201,10 @@ int main(int argc, char** argv) {
   const tutorial::TutorialInfo info{
       "02_unconstrained_motion",
       "ch2",
-      "Chapter 2: a thrown spinning box, explicit vs semi-implicit Euler, with its energy plot",
+      "Chapter 2: forces at points (Fig 2-1), and explicit vs semi-implicit Euler on a thrown "
+      "box and on a spring, with their energy plots",
       {render::Overlay::velocities, render::Overlay::centres}};
-  return tutorial::run_tutorial(argc, argv, info, {tutorial::scene<ThrownBox>()});
+  return tutorial::run_tutorial(
+      argc, argv, info,
+      {ch2::forces_at_points_scene(), tutorial::scene<ThrownBox>(), ch2::spring_scene()});
 }

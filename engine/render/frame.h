@@ -1,6 +1,7 @@
 // What one frame shows: a plain description that tutorials fill from engine state.
 //
 // World items are in metres, in the x–y plane with y up; the renderer never sees the engine.
+// 3D items (Arrow3, Path3, Point3, Label3) are drawn by the frame's oblique projection.
 // Which overlay layer an item belongs to decides whether --overlay shows it.
 #pragma once
 
@@ -11,6 +12,7 @@
 
 #include "kinematics/math_types.h"
 #include "render/colour.h"
+#include "render/oblique.h"
 #include "render/overlay.h"
 
 namespace lamina::render {
@@ -76,6 +78,38 @@ struct Label {
   Align align = Align::left;
 };
 
+// 3D items: points in m with a z, drawn where Frame::projection puts them (oblique.h).
+
+// An arrow in space from `from` to `to`, with an optional label at its tip.
+struct Arrow3 {
+  Vec3 from = Vec3::Zero();  // tail, in m
+  Vec3 to = Vec3::Zero();    // tip, in m
+  Colour colour = palette::ink;
+  std::string label;  // drawn next to the tip; may be empty
+};
+
+// A polyline in space: an axis, a circle of rotation, the edges of a body.
+struct Path3 {
+  std::vector<Vec3> points;  // in m
+  Colour colour = palette::grey;
+  bool dashed = false;
+};
+
+// A marked point in space (a particle, a point where a force is applied), with a name beside it.
+struct Point3 {
+  Vec3 at = Vec3::Zero();  // in m
+  Colour colour = palette::ink;
+  std::string label;  // drawn to the right of the mark; may be empty
+};
+
+// Text anchored at a point in space; `align` says which end of the text sits on the point.
+struct Label3 {
+  Vec3 at = Vec3::Zero();  // in m
+  std::string text;        // UTF-8
+  Colour colour = palette::ink;
+  Label::Align align = Label::Align::left;
+};
+
 // A corner of the drawing area (below the caption), where panels and the legend sit.
 enum class Corner { top_left, top_right, bottom_left, bottom_right };
 
@@ -89,7 +123,16 @@ struct Panel {
 
 // A legend row: a small sample of what the entry names, then its text.
 struct LegendEntry {
-  enum class Sample { arrow, line, dashed_line, swatch, fresh_contact, cached_contact, centre };
+  enum class Sample {
+    arrow,
+    line,
+    dashed_line,
+    swatch,
+    point,  // a Point3's mark, in the entry's colour
+    fresh_contact,
+    cached_contact,
+    centre
+  };
   Sample sample = Sample::line;
   Colour colour = palette::ink;
   std::string text;
@@ -106,6 +149,11 @@ struct Frame {
   std::vector<Contact> contacts;
   std::vector<Arrow> arrows;
   std::vector<Label> labels;
+  ObliqueProjection projection;  // how the 3D items below are drawn
+  std::vector<Path3> paths3;
+  std::vector<Arrow3> arrows3;
+  std::vector<Point3> points3;
+  std::vector<Label3> labels3;
   std::vector<Panel> panels;                    // at most one per corner
   std::vector<LegendEntry> legend;              // the scene's own entries; overlays add theirs
   Corner legend_corner = Corner::bottom_right;  // not a corner a panel uses

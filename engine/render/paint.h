@@ -37,7 +37,8 @@ struct Canvas {
 
 // The metre grid behind everything (the axes overlay).
 void paint_grid(const Frame& frame, Canvas& canvas);
-// Ground, paths, bodies with their rotation marks, joints, arrows and labels.
+// Ground, paths, bodies with their rotation marks, joints, arrows and labels, then the 3D items
+// (paths, arrows, points, labels) through the frame's oblique projection.
 void paint_world(const Frame& frame, Canvas& canvas);
 // Velocities, contact points, normals, forces and centres of mass, as switched on.
 void paint_overlays(const Frame& frame, Canvas& canvas);
@@ -54,7 +55,8 @@ double panel_padding(const Style& style);
 // The top-left pixel of a block of `size` placed in a corner of the drawing area.
 Vec2 corner_position(const Canvas& canvas, Corner corner, const Vec2& size);
 
-// Markers shared by the overlays and the legend, centred on a pixel.
+// Markers shared by the overlays, the 3D points and the legend, centred on a pixel.
+void draw_point(const Canvas& canvas, const Vec2& at, Colour colour);  // a disc in an ink ring
 void draw_fresh_contact(const Canvas& canvas, const Vec2& at);
 void draw_cached_contact(const Canvas& canvas, const Vec2& at);
 void draw_centre_mark(const Canvas& canvas, const Vec2& at, double angle);

@@ -67,6 +67,9 @@ void draw_sample(const Canvas& c, const LegendEntry& e, const Vec2& left, double
       stroke_convex(c.mesh, box, c.style.outline, palette::ink);
       break;
     }
+    case Sample::point:
+      draw_point(c, middle, e.colour);
+      break;
     case Sample::fresh_contact:
       draw_fresh_contact(c, middle);
       break;

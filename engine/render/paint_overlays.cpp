@@ -52,9 +52,12 @@ void paint_centres(Canvas& c, const Frame& frame) {
 
 }  // namespace
 
+void draw_point(const Canvas& c, const Vec2& at, Colour colour) {
+  fill_ringed_disc(c.mesh, at, c.style.marker, colour, 0.6 * c.style.outline, palette::ink);
+}
+
 void draw_fresh_contact(const Canvas& c, const Vec2& at) {
-  fill_ringed_disc(c.mesh, at, c.style.marker, layer_colour::fresh_contact, 0.6 * c.style.outline,
-                   palette::ink);
+  draw_point(c, at, layer_colour::fresh_contact);
 }
 
 void draw_cached_contact(const Canvas& c, const Vec2& at) {

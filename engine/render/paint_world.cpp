@@ -1,4 +1,4 @@
-// Ground, paths, bodies, joints, arrows and labels: the scene itself.
+// Ground, paths, bodies, joints, arrows and labels: the scene itself, then its 3D items.
 #include <cmath>
 
 #include "render/paint.h"
@@ -86,6 +86,32 @@ void paint_path(Canvas& c, const Path& path) {
                   path.dashed ? 9.0 * c.style.unit : 0.0);
 }
 
+// A marked point: a disc of its colour in an ink ring, its name to the right.
+void paint_point(Canvas& c, const Point3& point, const ObliqueProjection& projection) {
+  const Vec2 at = c.px(projection.project(point.at));
+  draw_point(c, at, point.colour);
+  if (point.label.empty()) return;
+  c.write(point.label, {Typeface::sans, c.style.text_px, point.colour},
+          at + Vec2(1.8 * c.style.marker, 0.0));
+}
+
+// The 3D items, each projected onto the plane and drawn as its planar counterpart.
+void paint_3d(Canvas& c, const Frame& frame) {
+  const ObliqueProjection& p = frame.projection;
+  for (const Path3& path : frame.paths3) {
+    Path flat{{}, path.colour, path.dashed};
+    for (const Vec3& point : path.points) flat.points.push_back(p.project(point));
+    paint_path(c, flat);
+  }
+  for (const Arrow3& a : frame.arrows3) {
+    paint_arrow(c, {p.project(a.from), p.project(a.to), a.colour, a.label, std::nullopt});
+  }
+  for (const Point3& point : frame.points3) paint_point(c, point, p);
+  for (const Label3& l : frame.labels3) {
+    paint_label(c, {p.project(l.at), l.text, l.colour, l.align});
+  }
+}
+
 }  // namespace
 
 void paint_world(const Frame& frame, Canvas& canvas) {
@@ -95,6 +121,7 @@ void paint_world(const Frame& frame, Canvas& canvas) {
   for (const Joint& j : frame.joints) paint_joint(canvas, j);
   for (const Arrow& a : frame.arrows) paint_arrow(canvas, a);
   for (const Label& l : frame.labels) paint_label(canvas, l);
+  paint_3d(canvas, frame);
 }
 
 }  // namespace lamina::render
