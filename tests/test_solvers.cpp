@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/views/contact/contact_story.h"
+#include "app/views/contact/world_explanation.h"
 #include "contact/solvers.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
@@ -114,5 +115,32 @@ TEST_SUITE("Solvers") {
     const double a = text[0].lambda_tangent, b = text[1].lambda_tangent;
     CHECK(std::abs(a) > 1.0);  // N: measured 2.81 N, 96 % of μ λc = 0.6 × 4.9 N
     CHECK(std::abs(a + b) < 1e-6);  // N: equal and opposite, to PGS's convergence
+  }
+
+  TEST_CASE("--explain names a pgs friction row by both contacts it serves, a text one by its own") {
+    // A box placed resting on the ground: one contact at step 0, both from step 1 (the cache
+    // adds one deepest point a step). pgs writes one friction row
+    // for the pair (row 2), text one per contact (rows 2 and 3); the titles come from the row map.
+    for (const std::string solver : {"pgs", "text"}) {
+      Scene scene = builtin_scene("box-on-ground-resting");
+      scene.solver = solver;
+      World world = build_world(scene, world_settings(scene));
+      WorldReport report;
+      world.step();
+      world.step(report);
+      std::vector<std::string> rows;
+      for (const tutorial::Section& s : view::explain_world_step(world, report, {"ground", "box"})) {
+        if (s.title.rfind("row ", 0) == 0) rows.push_back(s.title);
+      }
+      if (solver == "pgs") {
+        REQUIRE(rows.size() == 3);
+        CHECK(rows[2] == "row 2: friction row of contacts 0 and 1 (ground – box), one row at their "
+                         "middle, along u1 = z × n");
+      } else {
+        REQUIRE(rows.size() == 4);
+        CHECK(rows[2] == "row 2: friction row of contact 0 (ground – box), along u1 = z × n");
+        CHECK(rows[3] == "row 3: friction row of contact 1 (ground – box), along u1 = z × n");
+      }
+    }
   }
 }

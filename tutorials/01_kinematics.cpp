@@ -86,7 +86,7 @@ class RotatingBox : public tutorial::Scene {
   void draw(render::Frame& frame) const override {
     const State s = state_at(step_ * dt);
     const double k = frame.velocity_scale = 0.5;  // m of arrow per m/s
-    frame.caption = "Ch 1 · A turning box: vᵢ = v + ω × rᵢ (eq. 1-30, Fig 1-2, 1-3)";
+    frame.caption = "Ch 1 · A turning box: each particle moves at vᵢ = v + ω × rᵢ (eq. 1-30)";
     render::Body box;
     box.centre = planar(s.x);
     box.angle = s.theta;

@@ -24,6 +24,7 @@ namespace {
 
 using namespace lamina;
 using tutorial::fixed;
+using tutorial::counted;
 
 constexpr double tilt = 0.005;   // θ1(τ), in rad
 constexpr double depth = 0.01;   // how deep corner a starts, in m
@@ -87,7 +88,7 @@ class Walkthrough : public tutorial::Scene {
 
   tutorial::SceneInfo info() const override {
     return {"walkthrough", run_.world().settings().step.dt, 120, 1,
-            {Vec2(-3.45, -0.42), Vec2(0.95, 2.0)}};
+            {Vec2(-3.45, -0.78), Vec2(0.95, 2.0)}};
   }
   void step() override { run_.step(); }
 
@@ -216,8 +217,8 @@ class Walkthrough : public tutorial::Scene {
     const bool at_tau = step_index() == 0;
     render::Panel p;
     p.corner = render::Corner::top_left;
-    p.title = "step " + std::to_string(step_index()) + ": s = " + std::to_string(rows) +
-              " rows, J is " + std::to_string(rows) + " × 12 (" + (at_tau ? "5-11" : "5-19") + ")";
+    p.title = "step " + std::to_string(step_index()) + ": s = " + counted(rows, "row", "rows") +
+              ", J is " + std::to_string(rows) + " × 12 (" + (at_tau ? "5-11" : "5-19") + ")";
     p.lines = {"M⁻¹ = diag(m1⁻¹E, I1⁻¹, 0, 0): m1⁻¹ = " + fixed(box().inverse_mass, 1) +
                    ", I1⁻¹ = " + fixed(box().inverse_inertia_world(2, 2), 1) + "  (5-1)",
                "F_ext = [m1 g, 0, 0, 0], m1 g = " +

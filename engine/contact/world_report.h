@@ -26,7 +26,7 @@ struct ContactInfo {
   Vec3 normal = Vec3::UnitY();  // n, unit, from body 1 to body 2
   double separation = 0.0;      // C of eq. 4-1, in m (negative: penetrating)
   bool cached = false;          // re-placed from the cache (false: this step's deepest point)
-  double lambda_normal = 0.0;   // λ of its contact row, in N (impulse λ Δt)
+  double lambda_normal = 0.0;   // λ of its contact row, a force in N (its impulse is λ Δt)
   double lambda_tangent = 0.0;  // λ of its friction row along u1, in N
 };
 

@@ -93,7 +93,7 @@ void DropRun::draw(render::Frame& frame, double dx, render::Colour colour) const
     cut_arrow(frame, view.point, view.normal, view.normal_force, "λ_n",
               render::palette::bluish_green, Vec2(0.08, 0.0));
     cut_arrow(frame, view.point, view.tangent, view.friction_force, "λ_t", render::palette::orange,
-              Vec2(0.0, -0.2));
+              Vec2(0.0, -0.3));
     frame.contacts.push_back(view);
     const bool left = corner_side(c) < 0.0;
     frame.labels.push_back({view.point + Vec2(left ? -0.14 : 0.14, 0.1), corner_name(c),
@@ -123,14 +123,15 @@ render::Panel DropRun::panel(render::Corner corner, render::Colour colour) const
   if (contacts.empty()) p.lines.push_back("no contact: falling under m g");
   p.lines.push_back("Σ λ_n = " + fixed(total, 2) + " N (m g = " + fixed(g, 2) + " N), Σ λ_t = " +
                     fixed(friction, 2) + " N");
-  if (moment_ != view::Fig4Moment::at_rest) return p;
-  // At rest, the text's method leaves two things Lamina's does not (contact/solvers.h).
+  // The text's method leaves two things Lamina's does not (contact/solvers.h): a kept point
+  // above the ground that still pushes, and at rest friction squeezing the box.
   for (const ContactInfo& c : contacts) {
-    if (c.cached && c.separation > hover) {
-      p.lines.push_back(corner_name(c) + " hovers " + fixed(1000.0 * c.separation, 1) +
+    if (c.cached && c.separation > hover && c.lambda_normal > 0.0) {
+      p.lines.push_back(corner_name(c) + " pushes from " + fixed(1000.0 * c.separation, 1) +
                         " mm up: a kept gap asks ζ = 0 (eq. 4-4)");
     }
   }
+  if (moment_ != view::Fig4Moment::at_rest) return p;
   if (contacts.size() == 2 && std::abs(contacts[0].lambda_tangent) > squeeze &&
       contacts[0].lambda_tangent * contacts[1].lambda_tangent < 0.0) {
     p.lines.push_back("λ_t = ±" + fixed(std::abs(contacts[0].lambda_tangent), 1) +
@@ -152,7 +153,13 @@ std::string DropRun::moment() const {
     case view::Fig4Moment::first_contact:
       return "Fig 4-2 · first contact: collision detection gives one point, the deepest corner a";
     case view::Fig4Moment::one_point:
-      return "Fig 4-3 · the engine pushes at one point; the box turns over it";
+      for (const ContactInfo& c : contacts) {
+        if (c.lambda_normal > 0.0) {
+          return "Fig 4-3 · one point pushes, corner " + corner_name(c) + ": the box turns over it";
+        }
+      }
+      return "Fig 4-3 · one point, pushing nothing this step: the box turns over corner " +
+             corner_name(contacts.front());
     case view::Fig4Moment::two_points:
       for (const ContactInfo& fresh : contacts) {
         for (const ContactInfo& cached : contacts) {

@@ -99,7 +99,7 @@ class FrictionRamp : public tutorial::Scene {
     const RigidBody& at_t = world_.bodies_at_t()[static_cast<std::size_t>(box)];
     const RigidBody& after = world_.world().bodies()[static_cast<std::size_t>(box)];
     const double measured = (after.v - at_t.v).dot(down_slope) / dt;
-    // The text's sliding box: m a = m g sin θ − μ m g cos θ along the slope.
+    // Coulomb sliding (not in the text, which has no ramp): m a = m g sin θ − μ m g cos θ.
     const double predicted = g * (std::sin(r.theta) - mu * std::cos(r.theta));
     double normal = 0.0, friction = 0.0;
     for (const ContactInfo& c : world_.report().contacts()) {

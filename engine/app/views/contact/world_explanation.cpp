@@ -15,14 +15,36 @@ std::string pair_name(const std::vector<std::string>& names, const BodyPair& pai
 std::vector<std::string> row_titles(const World& world, const WorldReport& report,
                                     const std::vector<std::string>& names) {
   std::vector<std::string> titles(static_cast<std::size_t>(report.velocity.mlcp.row_count()));
+  // A friction row may serve both points of a pair (FrictionRows::per_manifold): its title
+  // names every contact whose row it is.
+  std::vector<std::string> friction_of(titles.size());
+  std::vector<std::string> friction_pair(titles.size());
+  std::vector<int> sharing(titles.size(), 0);
   int index = 0;
   for (const ContactPair& pair : report.pairs) {
     for (int k = 0; k < pair.count; ++k, ++index) {
       const Contact& c = pair.contacts[k];
-      const std::string of = "contact " + std::to_string(index) + " (" + pair_name(names, pair.bodies) + ")";
-      titles[c.row] = "contact row of " + of + " (eq. 4-3)";
-      if (c.friction_rows[0] >= 0) titles[c.friction_rows[0]] = "friction row of " + of + ", along u1 = z × n";
-      if (c.friction_rows[1] >= 0) titles[c.friction_rows[1]] = "friction row of " + of + ", along u2 = z";
+      const std::string bodies = " (" + pair_name(names, pair.bodies) + ")";
+      titles[c.row] = "contact row of contact " + std::to_string(index) + bodies + " (eq. 4-3)";
+      for (const int f : c.friction_rows) {
+        if (f < 0) continue;
+        const auto i = static_cast<std::size_t>(f);
+        friction_of[i] += (sharing[i]++ ? " and " : "") + std::to_string(index);
+        friction_pair[i] = bodies;
+      }
+    }
+  }
+  for (const ContactPair& pair : report.pairs) {
+    for (int k = 0; k < pair.count; ++k) {
+      const Contact& c = pair.contacts[k];
+      for (int axis = 0; axis < 2; ++axis) {
+        const int f = c.friction_rows[static_cast<std::size_t>(axis)];
+        if (f < 0) continue;
+        const auto i = static_cast<std::size_t>(f);
+        titles[i] = std::string("friction row of ") + (sharing[i] > 1 ? "contacts " : "contact ") +
+                    friction_of[i] + friction_pair[i] + (sharing[i] > 1 ? ", one row at their middle" : "") +
+                    (axis == 0 ? ", along u1 = z × n" : ", along u2 = z");
+      }
     }
   }
   for (std::size_t j = 0; j < report.joints.size(); ++j) {
