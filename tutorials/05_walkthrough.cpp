@@ -10,6 +10,7 @@
 // to m g (t → ∞). The text has z up (N = (0, 0, 1)); Lamina, like Box2D, has y up (N = (0, 1, 0)).
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "app/harness/format.h"
 #include "app/harness/plot.h"
@@ -33,9 +34,9 @@ constexpr double at_rest = 1e-3; // |v| (m/s) and |ω| (rad/s) below this: t →
 const Vec3 N(0.0, 1.0, 0.0);     // the ground's normal; the contact plane is N·x ≥ N·c, N·c = 0
 
 // Fig 5-1: box A (body 1 of the text, here index 0) with corner a `depth` into the fixed ground
-// B, stepped by the text's method with bias β.
-World walkthrough_world(double beta) {
-  WorldSettings settings = with_solver(WorldSettings(), "text");
+// B, stepped by `solver` (the text's method unless --solver says otherwise) with bias β.
+World walkthrough_world(double beta, const std::string& solver) {
+  WorldSettings settings = with_solver(WorldSettings(), solver);
   settings.step.beta = beta;
   World world(settings);
   const Material frictionless{0.0, 0.0};
@@ -49,7 +50,7 @@ World walkthrough_world(double beta) {
 // velocity. Lamina asks ζ1/Δt (eq. 4-5); the literal reading is Lamina's step with β Δt for β.
 double literal_lambda() {
   const double beta = StepSettings().beta, dt = StepSettings().dt;
-  World world = walkthrough_world(beta * dt);
+  World world = walkthrough_world(beta * dt, "text");
   WorldReport report;
   world.step(report);
   return report.velocity.solution.lambda[0];
@@ -82,7 +83,10 @@ RowTags tags_of(long step, bool second) {
 
 class Walkthrough : public tutorial::Scene {
  public:
-  Walkthrough() : run_(walkthrough_world(StepSettings().beta)), literal_(literal_lambda()) {
+  explicit Walkthrough(const tutorial::Options& o)
+      : solver_(o.solver.value_or("text")),
+        run_(walkthrough_world(StepSettings().beta, solver_)),
+        literal_(literal_lambda()) {
     run_.step();
   }
 
@@ -120,7 +124,7 @@ class Walkthrough : public tutorial::Scene {
 
   // normal_force.png: Σ λ over 2 s against m g.
   void write_data(const std::filesystem::path& folder) const override {
-    World world = walkthrough_world(StepSettings().beta);
+    World world = walkthrough_world(StepSettings().beta, solver_);
     const double dt = world.settings().step.dt;
     const double weight = world.bodies()[box_a].mass * -world.settings().step.gravity.y();
     std::vector<std::vector<double>> rows;
@@ -217,7 +221,7 @@ class Walkthrough : public tutorial::Scene {
     const bool at_tau = step_index() == 0;
     render::Panel p;
     p.corner = render::Corner::top_left;
-    p.title = "step " + std::to_string(step_index()) + ": s = " + counted(rows, "row", "rows") +
+    p.title = "step " + std::to_string(step_index()) + " · solver " + solver_ + ": s = " + counted(rows, "row", "rows") +
               ", J is " + std::to_string(rows) + " × 12 (" + (at_tau ? "5-11" : "5-19") + ")";
     p.lines = {"M⁻¹ = diag(m1⁻¹E, I1⁻¹, 0, 0): m1⁻¹ = " + fixed(box().inverse_mass, 1) +
                    ", I1⁻¹ = " + fixed(box().inverse_inertia_world(2, 2), 1) + "  (5-1)",
@@ -253,6 +257,7 @@ class Walkthrough : public tutorial::Scene {
     return p;
   }
 
+  std::string solver_;  // the method, "text" unless --solver says otherwise
   view::SteppedWorld run_;
   double literal_;  // λ1 at t = τ, eq. 5-7 read literally, in N
 };
@@ -260,12 +265,15 @@ class Walkthrough : public tutorial::Scene {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const tutorial::TutorialInfo info{
+  tutorial::TutorialInfo info{
       "05_walkthrough",
       "ch5",
       "Chapter 5: the walk-through at t = τ, τ+Δt, τ+2Δt and t → ∞ with the numbers of eq. "
       "5-1..5-21, by the text's own method, and the normal force converging to m g",
       {render::Overlay::contacts, render::Overlay::normals, render::Overlay::forces,
        render::Overlay::centres}};
-  return tutorial::run_tutorial(argc, argv, info, {tutorial::scene<Walkthrough>()});
+  for (const SolverInfo& s : solver_list()) info.solvers.push_back(s.name);
+  return tutorial::run_tutorial(
+      argc, argv, info,
+      {[](const tutorial::Options& o) { return std::make_unique<Walkthrough>(o); }});
 }
