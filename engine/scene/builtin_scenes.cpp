@@ -79,6 +79,47 @@ Scene pendulum() {
   return with({pivot, bob}, {rod});
 }
 
+// The chapter-3 tutorial's hinge (tutorials/ch3/angle_limit.cpp): a 1 kg bar, 1.2 m long, pinned
+// at one end and released level (θ = 0); it may swing down to 0.5 rad past hanging, θ ≥ −π/2 − 0.5.
+Scene angle_limit() {
+  BodyDescription pivot = box("pivot", {0.0, 0.0}, {0.1, 0.1});
+  pivot.is_static = true;
+  BodyDescription bar = box("bar", {0.6, 0.0}, {0.6, 0.05});
+  bar.density = 1.0 / 0.12;  // kg/m² over 0.12 m²: m = 1 kg
+  JointDescription limit;
+  limit.type = JointType::angle_limit;
+  limit.bodies = {"pivot", "bar"};
+  limit.lower = -M_PI / 2.0 - 0.5;
+  return with({pivot, bar}, {revolute("pivot", "bar", {0.0, 0.0}), limit});
+}
+
+// The chapter-3 tutorial's incline (tutorials/ch3/incline_geometry.h): a 2 kg box whose centre an
+// incline constraint holds on the line through p with normal N = (sin θ, cos θ), θ = 30°, half a
+// box above the slope; released at rest 1 m down the line from p. The slope, a static box, lies
+// 2 cm below the box so that no contact takes part (the contact cache keeps points only to 1 cm).
+Scene incline_constraint() {
+  const double theta = M_PI / 6.0;
+  const Vec2 normal(0.5, std::sqrt(3.0) / 2.0);     // (sin θ, cos θ)
+  const Vec2 downhill(std::sqrt(3.0) / 2.0, -0.5);  // (cos θ, −sin θ), along the line
+  const Vec2 half_extents(0.4, 0.25);
+  const Vec2 p = Vec2(0.0, 3.6) + half_extents.y() * normal;
+  BodyDescription held = box("box", p + 1.0 * downhill, half_extents, -theta);
+  held.density = 5.0;  // kg/m² over 0.4 m²: m = 2 kg
+  const double gap = 0.02;  // from the box's bottom to the slope, in m
+  const Vec2 slope_half(6.0, 0.25);
+  const Vec2 slope_centre = p + 5.5 * downhill - (half_extents.y() + gap + slope_half.y()) * normal;
+  BodyDescription slope = box("slope", slope_centre, slope_half, -theta);
+  slope.is_static = true;
+  JointDescription line;
+  line.type = JointType::incline;
+  line.body = "box";
+  line.point = p;
+  line.normal = normal;
+  Scene s = with({slope, held}, {line});
+  s.steps = 120;  // 2 s: the box slides 9.8 m, to the slope's lower end
+  return s;
+}
+
 Scene chain() {
   std::vector<BodyDescription> bodies = {ground()};
   BodyDescription anchor = box("anchor", {0.0, 6.0}, {0.1, 0.1});
@@ -160,11 +201,15 @@ const std::map<std::string, Recipe>& recipes() {
                                 [] { return box_on_ground(2.0, 0.3); }}},
       {"box-on-ground-resting", {"a box placed resting on the ground",
                                  [] { return box_on_ground(half, 0.0); }}},
-      {"incline", {"a box on a frictionless 30° incline (Fig 3-1)",
+      {"incline", {"a box sliding on a frictionless 30° ramp, held up by contact",
                    [] { return ramp(M_PI / 6, 0.0); }}},
       {"friction-ramp", {"a box on a 30° ramp with μ = 0.4 < tan 30°: it slides",
                          [] { return ramp(M_PI / 6, 0.4); }}},
       {"pendulum", {"a disc on a 2 m rod, released horizontal (distance constraint)", pendulum}},
+      {"angle-limit", {"a pinned bar released level; an angle limit stops it 0.5 rad past hanging",
+                       angle_limit}},
+      {"incline-constraint", {"a box held on a frictionless 30° line (Fig 3-1, incline constraint)",
+                              incline_constraint}},
       {"chain", {"eight links pinned end to end, released horizontal (revolute joints)", chain}},
       {"vertical-stack", {"five boxes placed touching, one on another", vertical_stack}},
       {"pyramid", {pyramid_description(pyramid_rows), [] { return pyramid_scene(pyramid_rows); }}},

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,13 +37,21 @@ struct BodyDescription {
   double angular_velocity = 0.0;     // ω about z, in rad/s
 };
 
-enum class JointType { revolute, distance };
+// The four constraints of chapter 3: a pin, a rod, a joint-angle limit and an incline.
+enum class JointType { revolute, distance, angle_limit, incline };
 
 struct JointDescription {
   JointType type = JointType::revolute;
-  std::array<std::string, 2> bodies;  // the two bodies' names
+  std::array<std::string, 2> bodies;  // revolute, distance, angle limit: the two bodies' names
   Vec2 anchor{0.0, 0.0};             // revolute: the pin, world frame, in m
   std::array<Vec2, 2> anchors{};     // distance: the rod's end on each body, world frame, in m
+  std::optional<double> lower;       // angle limit: θ ≥ lower, θ the second body's angle relative
+                                     // to the first in (−π, π], in rad; none: no lower limit
+  std::optional<double> upper;       // angle limit: θ ≤ upper, in rad; none: no upper limit
+  std::string body;                  // incline: the name of the body whose centre is held
+  Vec2 point{0.0, 0.0};              // incline: p, a point of the line, world frame, in m
+  Vec2 normal{0.0, 1.0};             // incline: N, the line's unit normal, world frame
+  bool one_sided = false;            // incline: (x − p)·N ≥ 0 (Fig 3-2), not = 0 (Fig 3-1)
 };
 
 struct Scene {

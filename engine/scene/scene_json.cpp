@@ -30,9 +30,13 @@ class Reader {
     throw SceneError(origin_ + ": " + (path.empty() ? "(top level)" : path) + ": " + what);
   }
 
+  void object(const json& j, const std::string& path) const {
+    if (!j.is_object()) fail(path, "must be an object, got " + type_of(j));
+  }
+
   void expect_object(const json& j, const std::string& path,
                      const std::set<std::string>& allowed) const {
-    if (!j.is_object()) fail(path, "must be an object, got " + type_of(j));
+    object(j, path);
     for (const auto& item : j.items()) {
       if (allowed.count(item.key()) == 0) {
         fail(join(path, item.key()), "unknown key (allowed: " + list(allowed) + ")");
@@ -241,38 +245,86 @@ BodyDescription read_body(const Reader& r, const json& j, const std::string& pat
   return body;
 }
 
-// `bodies` holds every body of the scene by name. A joint's physical rules (two different bodies,
-// not both static, a rod of some length) are the engine's: build_world reports them with the
-// joint's JSON path.
-JointDescription read_joint(const Reader& r, const json& j, const std::string& path,
-                            const std::set<std::string>& bodies) {
-  r.expect_object(j, path, {"type", "bodies", "anchor", "anchors"});
-  JointDescription joint;
-  const std::string type_path = Reader::join(path, "type");
-  const std::string type =
-      r.text(r.required(j, path, "type", " (\"revolute\" or \"distance\")"), type_path);
-  const std::string bp = Reader::join(path, "bodies");
-  const json& names = r.array(r.required(j, path, "bodies"), bp, 2);
-  for (size_t k = 0; k < 2; ++k) {
-    joint.bodies[k] = r.text(names[k], Reader::at(bp, k));
-    if (bodies.count(joint.bodies[k]) == 0) {
-      r.fail(Reader::at(bp, k), "no body is named \"" + joint.bodies[k] + "\"");
+// Each joint type with the keys it takes, in the order messages list the types.
+const std::vector<std::pair<JointType, std::set<std::string>>> joint_keys = {
+    {JointType::revolute, {"type", "bodies", "anchor"}},
+    {JointType::distance, {"type", "bodies", "anchors"}},
+    {JointType::angle_limit, {"type", "bodies", "lower", "upper"}},
+    {JointType::incline, {"type", "body", "point", "normal", "one_sided"}},
+};
+
+// "\"revolute\", \"distance\", \"angle_limit\" or \"incline\"", for messages.
+std::string joint_type_names() {
+  std::string names;
+  for (size_t k = 0; k < joint_keys.size(); ++k) {
+    names += std::string(k == 0 ? "" : k + 1 == joint_keys.size() ? " or " : ", ") + "\"" +
+             joint_type_name(joint_keys[k].first) + "\"";
+  }
+  return names;
+}
+
+// The name of a body of the scene, read from a string at `path`.
+std::string body_name(const Reader& r, const json& j, const std::string& path,
+                      const std::set<std::string>& bodies) {
+  std::string name = r.text(j, path);
+  if (bodies.count(name) == 0) r.fail(path, "no body is named \"" + name + "\"");
+  return name;
+}
+
+// An angle limit's sides: at least one, each within ±π, and lower ≤ upper when both are given.
+void read_angle_limit(const Reader& r, const json& j, const std::string& path,
+                      JointDescription& joint) {
+  for (auto [key, side] : {std::pair{"lower", &joint.lower}, std::pair{"upper", &joint.upper}}) {
+    if (j.contains(key)) {
+      *side = r.in_range(j.at(key), Reader::join(path, key), scene_limits::angle_limit);
     }
   }
-  if (type == "revolute") {
-    r.forbid(j, path, "anchors", "a revolute joint has one world anchor (use anchor)");
-    joint.type = JointType::revolute;
+  if (!joint.lower && !joint.upper) r.fail(path, "an angle limit needs \"lower\", \"upper\" or both");
+  if (joint.lower && joint.upper && *joint.upper < *joint.lower) {
+    r.fail(Reader::join(path, "upper"), "must not be below lower (" + shortest_number(*joint.lower) +
+                                            "), got " + shortest_number(*joint.upper));
+  }
+}
+
+// `bodies` holds every body of the scene by name. A joint's physical rules (two different bodies,
+// not both static, a rod of some length, a unit normal) are the engine's: build_world reports
+// them with the joint's JSON path.
+JointDescription read_joint(const Reader& r, const json& j, const std::string& path,
+                            const std::set<std::string>& bodies) {
+  r.object(j, path);
+  const std::string type_path = Reader::join(path, "type");
+  const std::string type =
+      r.text(r.required(j, path, "type", " (" + joint_type_names() + ")"), type_path);
+  const auto form = std::find_if(joint_keys.begin(), joint_keys.end(),
+                                 [&type](const auto& f) { return type == joint_type_name(f.first); });
+  if (form == joint_keys.end()) {
+    r.fail(type_path, "must be " + joint_type_names() + ", got \"" + type + "\"");
+  }
+  r.expect_object(j, path, form->second);
+  JointDescription joint;
+  joint.type = form->first;
+  if (joint.type == JointType::incline) {
+    joint.body = body_name(r, r.required(j, path, "body"), Reader::join(path, "body"), bodies);
+    joint.point = r.vec2(r.required(j, path, "point"), Reader::join(path, "point"),
+                         scene_limits::coordinate);
+    joint.normal = r.vec2(r.required(j, path, "normal"), Reader::join(path, "normal"),
+                          scene_limits::normal_component);
+    optional(r, j, path, "one_sided", joint.one_sided, &Reader::boolean);
+    return joint;
+  }
+  const std::string bp = Reader::join(path, "bodies");
+  const json& pair = r.array(r.required(j, path, "bodies"), bp, 2);
+  for (size_t k = 0; k < 2; ++k) joint.bodies[k] = body_name(r, pair[k], Reader::at(bp, k), bodies);
+  if (joint.type == JointType::revolute) {
     joint.anchor = r.vec2(r.required(j, path, "anchor"), Reader::join(path, "anchor"),
                           scene_limits::coordinate);
-  } else if (type == "distance") {
-    r.forbid(j, path, "anchor", "a distance joint has two anchors (use anchors)");
-    joint.type = JointType::distance;
+  } else if (joint.type == JointType::distance) {
     const std::string ap = Reader::join(path, "anchors");
     const json& anchors = r.array(r.required(j, path, "anchors"), ap, 2);
     joint.anchors = {r.vec2(anchors[0], Reader::at(ap, 0), scene_limits::coordinate),
                      r.vec2(anchors[1], Reader::at(ap, 1), scene_limits::coordinate)};
   } else {
-    r.fail(type_path, "must be \"revolute\" or \"distance\", got \"" + type + "\"");
+    read_angle_limit(r, j, path, joint);
   }
   return joint;
 }
@@ -309,40 +361,6 @@ Scene read_scene(const Reader& r, const json& j) {
   return scene;
 }
 
-// Scene files are written with their keys in a fixed order (name first), laid out to be edited.
-using ordered_json = nlohmann::ordered_json;
-
-ordered_json vec2_json(const Vec2& v) { return ordered_json::array({v[0], v[1]}); }
-
-ordered_json shape_json(const ShapeDescription& shape) {
-  if (shape.type == ShapeType::circle) return {{"type", "circle"}, {"radius", shape.radius}};
-  return {{"type", "box"}, {"half_extents", vec2_json(shape.half_extents)}};
-}
-
-ordered_json body_json(const BodyDescription& b) {
-  ordered_json j = {{"name", b.name}, {"shape", shape_json(b.shape)}, {"position", vec2_json(b.position)},
-            {"angle", b.angle}, {"static", b.is_static}, {"friction", b.friction},
-            {"restitution", b.restitution}};
-  if (!b.is_static) {
-    j["density"] = b.density;
-    j["velocity"] = vec2_json(b.velocity);
-    j["angular_velocity"] = b.angular_velocity;
-  }
-  return j;
-}
-
-ordered_json joint_json(const JointDescription& joint) {
-  const bool revolute = joint.type == JointType::revolute;
-  ordered_json j = {{"type", revolute ? "revolute" : "distance"},
-                    {"bodies", {joint.bodies[0], joint.bodies[1]}}};
-  if (revolute) {
-    j["anchor"] = vec2_json(joint.anchor);
-  } else {
-    j["anchors"] = {vec2_json(joint.anchors[0]), vec2_json(joint.anchors[1])};
-  }
-  return j;
-}
-
 }  // namespace
 
 Scene parse_scene(const std::string& json_text, const std::string& origin) {
@@ -369,16 +387,6 @@ Scene read_scene_file(const std::string& path) {
   return parse_scene(text, path);
 }
 
-std::string scene_to_json(const Scene& scene) {
-  ordered_json j = {{"name", scene.name}, {"description", scene.description},
-                    {"solver", scene.solver},
-                    {"gravity", vec2_json(scene.step.gravity.head<2>())}, {"dt", scene.step.dt},
-                    {"iterations", scene.step.iterations}, {"beta", scene.step.beta},
-                    {"steps", scene.steps},
-                    {"bodies", ordered_json::array()}, {"joints", ordered_json::array()}};
-  for (const BodyDescription& body : scene.bodies) j["bodies"].push_back(body_json(body));
-  for (const JointDescription& joint : scene.joints) j["joints"].push_back(joint_json(joint));
-  return layout_json(j) + "\n";
-}
+std::string scene_to_json(const Scene& scene) { return layout_json(scene_document(scene)) + "\n"; }
 
 }  // namespace lamina

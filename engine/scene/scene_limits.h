@@ -8,6 +8,8 @@
 // measured with the Release build (-O2) on one core.
 #pragma once
 
+#include <cmath>
+
 namespace lamina::scene_limits {
 
 template <typename T>
@@ -47,6 +49,15 @@ inline constexpr Range<double> coordinate{-1e6, 1e6};
 // A body's angle about z, in rad: the same spacing of doubles, 1.2e-10 rad near 1e6. At 1e15 rad
 // the angle names an orientation only to within 0.125 rad.
 inline constexpr Range<double> angle{-1e6, 1e6};
+
+// An angle limit's lower or upper end θ_L, in rad: the relative angle θ it is compared with is
+// measured in (−π, π] (angle_limit.h), so an end beyond ±π would hold always or never.
+// AngleLimit itself refuses −π, the one value of this range outside (−π, π].
+inline constexpr Range<double> angle_limit{-M_PI, M_PI};
+
+// Each component of an incline's normal N, which InclineConstraint requires to be a unit vector
+// (|N| = 1 within 1e-9): a component beyond ±1 is surely a typing error.
+inline constexpr Range<double> normal_component{-1.0, 1.0};
 
 // A box's half extents and a circle's radius, in m. 0.02: the two corners of a box's face must
 // lie farther apart than the contact cache's merge distance (0.02 m, contact_cache.h), or they

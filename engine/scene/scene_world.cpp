@@ -4,8 +4,12 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "constraints/angle_limit.h"
 #include "constraints/distance_constraint.h"
+#include "constraints/incline_constraint.h"
 #include "constraints/revolute_joint.h"
 #include "contact/solvers.h"
 
@@ -31,16 +35,41 @@ int add_body(World& world, const BodyDescription& desc) {
   return world.add_body(body, shape, material);
 }
 
-std::unique_ptr<Constraint> make_joint(const World& world, const JointDescription& desc, int a, int b) {
+// The engine constraints of a scene's joint: one, or for an angle limit with both sides two, as
+// AngleLimit is one-sided (the lower side's row first). `index_of` gives each body's index.
+std::vector<std::unique_ptr<Constraint>> make_joint(const World& world,
+                                                    const JointDescription& desc,
+                                                    const std::map<std::string, int>& index_of) {
   const std::vector<RigidBody>& bodies = world.bodies();
+  std::vector<std::unique_ptr<Constraint>> made;
+  if (desc.type == JointType::incline) {
+    const InclineKind kind = desc.one_sided ? InclineKind::one_sided : InclineKind::bilateral;
+    made.push_back(std::make_unique<InclineConstraint>(index_of.at(desc.body), planar(desc.point),
+                                                       planar(desc.normal), kind));
+    return made;
+  }
+  const int a = index_of.at(desc.bodies[0]);
+  const int b = index_of.at(desc.bodies[1]);
   if (desc.type == JointType::revolute) {
     const Vec3 pin = planar(desc.anchor);
-    return std::make_unique<RevoluteJoint>(anchor_at(bodies, a, pin), anchor_at(bodies, b, pin));
+    made.push_back(
+        std::make_unique<RevoluteJoint>(anchor_at(bodies, a, pin), anchor_at(bodies, b, pin)));
+  } else if (desc.type == JointType::distance) {
+    const Vec3 end_a = planar(desc.anchors[0]);
+    const Vec3 end_b = planar(desc.anchors[1]);
+    made.push_back(std::make_unique<DistanceConstraint>(
+        anchor_at(bodies, a, end_a), anchor_at(bodies, b, end_b), (end_b - end_a).norm()));
+  } else {
+    if (desc.lower) made.push_back(std::make_unique<AngleLimit>(a, b, *desc.lower, LimitSide::lower));
+    if (desc.upper) made.push_back(std::make_unique<AngleLimit>(a, b, *desc.upper, LimitSide::upper));
   }
-  const Vec3 end_a = planar(desc.anchors[0]);
-  const Vec3 end_b = planar(desc.anchors[1]);
-  return std::make_unique<DistanceConstraint>(anchor_at(bodies, a, end_a), anchor_at(bodies, b, end_b),
-                                              (end_b - end_a).norm());
+  return made;
+}
+
+// `("ground", "bar")`: the bodies of a joint, named after its JSON path in messages.
+std::string joint_bodies(const JointDescription& joint) {
+  if (joint.type == JointType::incline) return "(\"" + joint.body + "\")";
+  return "(\"" + joint.bodies[0] + "\", \"" + joint.bodies[1] + "\")";
 }
 
 // Runs `add`; an engine refusal is rethrown with the JSON path of the scene's value in front.
@@ -70,9 +99,10 @@ World build_world(const Scene& scene, const WorldSettings& settings) {
   }
   for (size_t i = 0; i < scene.joints.size(); ++i) {
     const JointDescription& joint = scene.joints[i];
-    at_path("joints[" + std::to_string(i) + "] (\"" + joint.bodies[0] + "\", \"" + joint.bodies[1] + "\")", [&] {
-      return world.add_joint(make_joint(world, joint, index_of.at(joint.bodies[0]),
-                                        index_of.at(joint.bodies[1])));
+    at_path("joints[" + std::to_string(i) + "] " + joint_bodies(joint), [&] {
+      for (std::unique_ptr<Constraint>& made : make_joint(world, joint, index_of)) {
+        world.add_joint(std::move(made));
+      }
     });
   }
   return world;

@@ -5,6 +5,9 @@
 //   equation_links --write <source>         rewrites <source>/docs/the-text.md in place
 //   equation_links --check <source> <out>   writes what the page should be to <out>; exit 1,
 //                                           naming the difference, when the page differs
+//   equation_links --tags <source> <file>…  reads explanations (--explain-format json) and
+//                                           exits 1, naming it, when an "equation" tag is not
+//                                           a list of the page's equations ("3-23, 3-24")
 //
 // A citation is "eq." (or "Eq.") followed by a number N-M, a range N-M..N-K, or a list of them:
 // "eq. 3-16", "eq. 2-1..2-8", "eq. 3-18, 3-19, 3-14". Every cited number must have a row in
@@ -273,18 +276,72 @@ int compare(const std::vector<std::string>& page, const std::vector<std::string>
 
 }  // namespace
 
+// The equations the page has a row for, between its equation markers.
+std::set<Equation> page_equations(const std::vector<std::string>& page) {
+  std::set<Equation> rows;
+  bool inside = false;
+  for (const auto& line : page) {
+    if (line.find("<!-- equations: begin") != std::string::npos) inside = true;
+    if (line.find("<!-- equations: end") != std::string::npos) inside = false;
+    Equation e;
+    if (inside && row_equation(line, e)) rows.insert(e);
+  }
+  return rows;
+}
+
+// Every "equation" tag of the explanation files names equations of the page: a list of
+// numbers N-M or ranges N-M..N-K, ", "-separated. Prints each that does not; 1 if any.
+int check_tags(const std::set<Equation>& rows, const std::vector<std::string>& files) {
+  static const std::regex tag(R"re("equation": "([^"]*)")re");
+  static const std::regex list(R"((\d-\d+(\.\.\d-\d+)?)(, \d-\d+(\.\.\d-\d+)?)*)");
+  static const std::regex item(R"(\d-\d+(\.\.\d-\d+)?)");
+  int bad = 0, tags = 0;
+  for (const auto& file : files) {
+    const auto lines = read_lines(file);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      for (std::sregex_iterator m(lines[i].begin(), lines[i].end(), tag), end; m != end; ++m) {
+        const std::string value = (*m)[1];
+        if (value.empty()) continue;
+        ++tags;
+        const std::string where = file + ":" + std::to_string(i + 1) + ": \"" + value + "\"";
+        if (!std::regex_match(value, list)) {
+          std::cerr << where << " is not a list of equation numbers\n";
+          ++bad;
+          continue;
+        }
+        Citations cited;
+        for (std::sregex_iterator n(value.begin(), value.end(), item); n != end; ++n)
+          add_item(n->str(), Citation{file, static_cast<int>(i + 1), ""}, cited);
+        for (const auto& [equation, lines_citing] : cited) {
+          if (rows.count(equation)) continue;
+          std::cerr << where << ": eq. " << name(equation) << " is not an equation of the text\n";
+          ++bad;
+        }
+      }
+    }
+  }
+  if (tags == 0) {
+    std::cerr << "equation_links: no equation tags in the files given\n";
+    return 1;
+  }
+  return bad == 0 ? 0 : 1;
+}
+
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   const bool write = args.size() == 2 && args[0] == "--write";
   const bool check = args.size() == 3 && args[0] == "--check";
-  if (!write && !check) {
-    std::cerr << "usage: equation_links --write <source> | --check <source> <out>\n";
+  const bool tags = args.size() >= 3 && args[0] == "--tags";
+  if (!write && !check && !tags) {
+    std::cerr << "usage: equation_links --write <source> | --check <source> <out> | "
+                 "--tags <source> <file>...\n";
     return 2;
   }
   try {
     const fs::path source = args[1];
     const fs::path doc = source / "docs" / "the-text.md";
     const auto page = read_lines(doc);
+    if (tags) return check_tags(page_equations(page), {args.begin() + 2, args.end()});
     const auto wanted = generate(page, scan_engine(source / "engine"));
     if (write) {
       if (page != wanted) write_lines(doc, wanted);
