@@ -229,8 +229,9 @@ class Walkthrough : public tutorial::Scene {
                    pair_text(box().mass * run_.world().settings().step.gravity, 1) + " N  (5-2)",
                "V: v1 = " + pair_text(box().v, 4) + " m/s, ω1 = " +
                    fixed(box().angular_velocity.z(), 4) + " rad/s  (" + (at_tau ? "5-3" : "3-5") + ")"};
-    for (std::size_t i = 0; i < pair().size(); ++i) {
-      const Contact& c = pair()[i];
+    const std::vector<Contact> points = pair();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Contact& c = points[i];
       const std::string n = corner_name(i);
       const RowTags tags = tags_of(step_index(), n == "b");
       const double epsilon = std::min(c.separation, 0.0);
