@@ -106,4 +106,39 @@ TEST_SUITE("SceneFiles") {
     CHECK_THROWS_AS(builtin_scene("pyramid:0"), SceneError);
     CHECK_THROWS_AS(builtin_scene("no-such-scene"), SceneError);
   }
+
+  TEST_CASE("the scene families: NAME:P builds the member, NAME the default, bad P is refused") {
+    // Masses are density × area (unit boxes: 1 m²; the ball: π r²), exact up to π's rounding.
+    const auto build_world = [](const Scene& scene) {
+      return lamina::build_world(scene, world_settings(scene));
+    };
+    const World stack = build_world(builtin_scene("vertical-stack:20"));
+    CHECK(stack.bodies().size() == 1 + 20);
+    CHECK(stack.bodies().back().x.y() == 19.5);  // unit boxes touching from y = 0: the 20th at 19.5
+    CHECK(builtin_scene("vertical-stack").bodies.size() == 1 + 5);  // the default member
+
+    const Scene heavy = builtin_scene("heavy-on-light:1000");
+    CHECK(heavy.name == "heavy-on-light:1000");
+    const World hw = build_world(heavy);
+    CHECK(hw.bodies()[1].mass == doctest::Approx(1.0).epsilon(1e-15));
+    CHECK(hw.bodies()[2].mass == doctest::Approx(1000.0).epsilon(1e-15));
+    // Placed exactly touching: the light box's top and the heavy box's bottom both at y = 1.
+    CHECK(hw.bodies()[1].x.y() + 0.5 == hw.bodies()[2].x.y() - 0.5);
+
+    const World chain = build_world(builtin_scene("ball-and-chain:100"));
+    double links = 0.0;
+    for (std::size_t i = 2; i + 1 < chain.bodies().size(); ++i) links += chain.bodies()[i].mass;
+    CHECK(links == doctest::Approx(0.5).epsilon(1e-12));  // 10 links of 0.5 × 0.1 m², density 1
+    const RigidBody& ball = chain.bodies().back();
+    CHECK(ball.mass == doctest::Approx(100.0 * 0.5).epsilon(1e-12));
+    // The rest distance from the fixed pin (0, 10) to the ball's centre: 5 m of chain
+    // plus the 0.5 m radius.
+    CHECK((ball.x - Vec3(0.0, 10.0, 0.0)).norm() == doctest::Approx(5.5).epsilon(1e-15));
+    CHECK(chain.joint_count() == 11);
+
+    for (const char* bad : {"heavy-on-light:0", "pyramid:2.5", "ball-and-chain:x", "vertical-stack:",
+                            "vertical-stack:1001", "heavy-on-light:nan"}) {
+      CHECK_THROWS_AS(builtin_scene(bad), SceneError);
+    }
+  }
 }

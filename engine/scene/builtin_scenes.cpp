@@ -6,6 +6,7 @@
 #include <map>
 
 #include "scene/scene_json.h"
+#include "scene/shortest_number.h"
 
 namespace lamina {
 namespace {
@@ -135,10 +136,50 @@ Scene chain() {
   return with(bodies, joints);
 }
 
-Scene vertical_stack() {
+// N unit boxes placed touching, one on another, on the ground.
+Scene vertical_stack(double n) {
   std::vector<BodyDescription> bodies = {ground()};
-  for (int i = 0; i < 5; ++i) bodies.push_back(box("box" + std::to_string(i), {0.0, half + 2 * half * i}));
+  for (int i = 0; i < static_cast<int>(n); ++i) {
+    bodies.push_back(box("box" + std::to_string(i), {0.0, half + 2 * half * i}));
+  }
   return with(bodies);
+}
+
+// A unit box of density R resting on a unit box of density 1 on the ground: a mass ratio R.
+Scene heavy_on_light(double ratio) {
+  BodyDescription light = box("light", {0.0, half});
+  BodyDescription heavy = box("heavy", {0.0, 3 * half});
+  heavy.density = ratio;
+  return with({ground(), light, heavy});
+}
+
+// Ten links (half extents 0.25 × 0.05, density 1, 0.05 kg each) pinned end to end from a fixed
+// point at (0, 10), released horizontal, and a disc of radius 0.5 pinned by its rim at the last
+// link's free end, whose mass is R times the chain's 0.5 kg.
+Scene ball_and_chain(double ratio) {
+  constexpr int links = 10;
+  constexpr double link_length = 0.5, radius = 0.5, height = 10.0;
+  BodyDescription anchor = box("anchor", {0.0, height}, {0.1, 0.1});
+  anchor.is_static = true;
+  std::vector<BodyDescription> bodies = {ground(), anchor};
+  std::vector<JointDescription> joints;
+  double chain_mass = 0.0;
+  for (int i = 0; i < links; ++i) {
+    const std::string name = "link" + std::to_string(i);
+    bodies.push_back(box(name, {link_length * (i + 0.5), height}, {0.25, 0.05}));
+    chain_mass += bodies.back().density * 0.5 * 0.1;
+    joints.push_back(revolute(i == 0 ? "anchor" : "link" + std::to_string(i - 1), name,
+                              {link_length * i, height}));
+  }
+  BodyDescription ball;
+  ball.name = "ball";
+  ball.shape.type = ShapeType::circle;
+  ball.shape.radius = radius;
+  ball.position = {link_length * links + radius, height};
+  ball.density = ratio * chain_mass / (M_PI * radius * radius);
+  bodies.push_back(ball);
+  joints.push_back(revolute("link" + std::to_string(links - 1), "ball", {link_length * links, height}));
+  return with(bodies, joints);
 }
 
 Scene dominoes() {
@@ -181,9 +222,48 @@ Scene see_saw() {
 }
 
 // What a pyramid of `rows` rows is, written once for the list and for every pyramid:N.
-std::string pyramid_description(int rows) {
+std::string pyramid_description(double n) {
+  const int rows = static_cast<int>(n);
   return "a pyramid of " + std::to_string(rows * (rows + 1) / 2) + " boxes placed touching, " +
          std::to_string(rows) + " in its base";
+}
+
+std::string stack_description(double n) {
+  return std::to_string(static_cast<int>(n)) + " boxes placed touching, one on another";
+}
+
+std::string heavy_description(double ratio) {
+  return "a box " + shortest_number(ratio) + " times as dense resting on a unit box";
+}
+
+std::string chain_description(double ratio) {
+  return "ten links pinned from (0, 10), released level, with a ball " + shortest_number(ratio) +
+         " times the chain's mass";
+}
+
+// A family of scenes `NAME:P`: what P is, its range and default, and how to build a member.
+struct Family {
+  std::string parameter;            // "N" or "R"
+  std::string meaning;              // what P is, for `lamina scenes`
+  bool whole;                       // P must be a whole number
+  double low, high;                 // P's range
+  double fallback;                  // the member `NAME` alone gives
+  std::string (*describe)(double);  // a member's description
+  Scene (*build)(double);           // a member but for its name and description
+};
+
+const std::map<std::string, Family>& families() {
+  static const std::map<std::string, Family> table = {
+      {"ball-and-chain", {"R", "the ball's mass over the chain's", false, 1e-3, 1e4, 100.0,
+                          chain_description, ball_and_chain}},
+      {"heavy-on-light", {"R", "the top box's density over the bottom box's", false, 1e-3, 1e4,
+                          100.0, heavy_description, heavy_on_light}},
+      {"pyramid", {"N", "the boxes in its base", true, 1.0, 1000.0, double(pyramid_rows),
+                   pyramid_description, [](double n) { return pyramid_scene(static_cast<int>(n)); }}},
+      {"vertical-stack", {"N", "the boxes", true, 1.0, 1000.0, 5.0, stack_description,
+                          vertical_stack}},
+  };
+  return table;
 }
 
 // A built-in scene: its description, written here once, and how to build the rest of it.
@@ -211,8 +291,6 @@ const std::map<std::string, Recipe>& recipes() {
       {"incline-constraint", {"a box held on a frictionless 30° line (Fig 3-1, incline constraint)",
                               incline_constraint}},
       {"chain", {"eight links pinned end to end, released horizontal (revolute joints)", chain}},
-      {"vertical-stack", {"five boxes placed touching, one on another", vertical_stack}},
-      {"pyramid", {pyramid_description(pyramid_rows), [] { return pyramid_scene(pyramid_rows); }}},
       {"dominoes", {"ten dominoes; the first is pushed over", dominoes}},
       {"bridge", {"ten planks pinned end to end between two posts, a box dropped on them", bridge}},
       {"see-saw", {"a plank pinned on a post; a box dropped on one end", see_saw}},
@@ -225,27 +303,52 @@ const std::map<std::string, Recipe>& recipes() {
 std::vector<BuiltinScene> builtin_scene_list() {
   std::vector<BuiltinScene> list;
   for (const auto& [name, recipe] : recipes()) list.push_back({name, recipe.description});
+  for (const auto& [name, family] : families()) list.push_back({name, family.describe(family.fallback)});
+  std::sort(list.begin(), list.end(),
+            [](const BuiltinScene& a, const BuiltinScene& b) { return a.name < b.name; });
+  return list;
+}
+
+std::vector<SceneFamily> builtin_scene_families() {
+  std::vector<SceneFamily> list;
+  for (const auto& [name, f] : families()) {
+    list.push_back({name, f.parameter,
+                    f.meaning + "; " + f.parameter + (f.whole ? " a whole number" : "") + " in [" +
+                        shortest_number(f.low) + ", " + shortest_number(f.high) + "], default " +
+                        shortest_number(f.fallback)});
+  }
   return list;
 }
 
 Scene builtin_scene(const std::string& name) {
-  const std::string prefix = "pyramid:";
-  if (name.rfind(prefix, 0) == 0) {
-    const std::string rows = name.substr(prefix.size());
-    char* end = nullptr;
-    const long n = std::strtol(rows.c_str(), &end, 10);
-    if (rows.empty() || *end != '\0' || n < 1 || n > 1000) {
-      throw SceneError(name + ": pyramid rows must be a whole number in [1, 1000]");
-    }
-    return pyramid_scene(static_cast<int>(n));
+  const auto recipe = recipes().find(name);
+  if (recipe != recipes().end()) {
+    Scene scene = recipe->second.build();
+    scene.name = recipe->first;
+    scene.description = recipe->second.description;
+    return scene;
   }
-  const auto it = recipes().find(name);
-  if (it == recipes().end()) {
+  const std::string family_name = name.substr(0, name.find(':'));
+  const auto family = families().find(family_name);
+  if (family == families().end()) {
     throw SceneError(name + ": no such built-in scene (see `lamina scenes`)");
   }
-  Scene scene = it->second.build();
-  scene.name = it->first;
-  scene.description = it->second.description;
+  const Family& f = family->second;
+  double p = f.fallback;
+  if (family_name != name) {
+    const std::string text = name.substr(family_name.size() + 1);
+    char* end = nullptr;
+    p = std::strtod(text.c_str(), &end);
+    const bool whole_ok = !f.whole || p == std::floor(p);
+    if (text.empty() || *end != '\0' || !(p >= f.low && p <= f.high) || !whole_ok) {
+      throw SceneError(name + ": " + f.parameter + " must be " +
+                       (f.whole ? "a whole number" : "a number") + " in [" +
+                       shortest_number(f.low) + ", " + shortest_number(f.high) + "]");
+    }
+  }
+  Scene scene = f.build(p);
+  scene.name = p == f.fallback ? family_name : family_name + ":" + shortest_number(p);
+  scene.description = f.describe(p);
   return scene;
 }
 

@@ -13,12 +13,23 @@ struct BuiltinScene {
   std::string description;  // one line for `lamina scenes`
 };
 
+// A family of built-in scenes with one parameter, `NAME:P` (`pyramid:20`, `heavy-on-light:100`);
+// `NAME` alone is the family's default member.
+struct SceneFamily {
+  std::string name;         // "pyramid"
+  std::string parameter;    // "N" or "R", as `lamina scenes` shows it
+  std::string description;  // one line: what P is, its range and its default
+};
+
 // Every built-in scene's name and description, in order of name; read from a table, building
-// no scene.
+// no scene. A family's default member is listed under the family's name.
 std::vector<BuiltinScene> builtin_scene_list();
 
-// The built-in scene of that name, with the list's description; "pyramid:N" gives a pyramid of
-// N rows. Throws SceneError for an unknown name.
+// The families of parameterised scenes, in order of name.
+std::vector<SceneFamily> builtin_scene_families();
+
+// The built-in scene of that name, with the list's description; "NAME:P" gives a family's member
+// (builtin_scene_families). Throws SceneError for an unknown name or a parameter out of range.
 Scene builtin_scene(const std::string& name);
 
 // A pyramid of boxes (half extents 0.5, placed touching) with `rows` boxes in its base.

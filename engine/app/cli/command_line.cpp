@@ -28,7 +28,7 @@ const char* const exit_codes =
 
 const char* const scene_help =
     "a scene file (JSON, see docs/scene-format.md), or the name of a built-in scene "
-    "(`lamina scenes`; pyramid:N has N boxes in its base)";
+    "(`lamina scenes`; NAME:P sets a family's parameter, e.g. pyramid:10, heavy-on-light:1000)";
 
 
 // Adds an option whose value goes into an std::optional when it is given.

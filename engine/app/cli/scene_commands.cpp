@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "app/cli/scene_source.h"
 #include "app/harness/format.h"
@@ -25,13 +27,18 @@ void list_solvers() {
 
 void list_scenes() {
   const std::vector<BuiltinScene> scenes = builtin_scene_list();
+  std::vector<BuiltinScene> families;
+  for (const SceneFamily& f : builtin_scene_families()) {
+    families.push_back({f.name + ":" + f.parameter, f.description});
+  }
   std::size_t width = 0;
   for (const BuiltinScene& s : scenes) width = std::max(width, s.name.size());
-  for (const BuiltinScene& s : scenes) {
-    std::printf("%-*s  %s\n", static_cast<int>(width), s.name.c_str(), s.description.c_str());
+  for (const BuiltinScene& s : families) width = std::max(width, s.name.size());
+  for (const std::vector<BuiltinScene>* list : {&scenes, &std::as_const(families)}) {
+    for (const BuiltinScene& s : *list) {
+      std::printf("%-*s  %s\n", static_cast<int>(width), s.name.c_str(), s.description.c_str());
+    }
   }
-  std::printf("%-*s  %s\n", static_cast<int>(width), "pyramid:N",
-              "the pyramid with N boxes in its base (pyramid is pyramid:20)");
 }
 
 namespace {
