@@ -1,0 +1,128 @@
+#include "constraints/lemke.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "kinematics/require.h"
+
+namespace lamina {
+namespace {
+
+// The tableau B⁻¹ [I  −M  −d | q] of the n rows: columns 0..n−1 are the w's, n..2n−1 the z's,
+// 2n is z0, and the last column is the basic variables' values.
+class Tableau {
+ public:
+  Tableau(const Eigen::MatrixXd& M, const Eigen::VectorXd& q) : n_(static_cast<int>(q.size())) {
+    t_ = Eigen::MatrixXd::Zero(n_, 2 * n_ + 2);
+    t_.leftCols(n_).setIdentity();
+    t_.middleCols(n_, n_) = -M;
+    t_.col(2 * n_).setConstant(-1.0);
+    t_.col(2 * n_ + 1) = q;
+    basis_.resize(static_cast<std::size_t>(n_));
+    for (int i = 0; i < n_; ++i) basis_[static_cast<std::size_t>(i)] = i;  // every w basic
+  }
+
+  int z0() const { return 2 * n_; }
+  double column(int row, int variable) const { return t_(row, variable); }
+  double value(int row) const { return t_(row, 2 * n_ + 1); }
+  int basic(int row) const { return basis_[static_cast<std::size_t>(row)]; }
+
+  // The complement of a variable: w_i ↔ z_i.
+  int complement(int variable) const { return variable < n_ ? variable + n_ : variable - n_; }
+
+  // Makes `variable` basic in `row` (Gauss-Jordan on the whole tableau).
+  void pivot(int row, int variable) {
+    t_.row(row) /= t_(row, variable);
+    for (int i = 0; i < n_; ++i) {
+      if (i != row && t_(i, variable) != 0.0) t_.row(i) -= t_(i, variable) * t_.row(row);
+    }
+    basis_[static_cast<std::size_t>(row)] = variable;
+  }
+
+  // The row that leaves when `variable` enters: the least ratio value/column over the rows whose
+  // column is positive; ties go to z0's row, then lexicographically by B⁻¹'s row over the column
+  // (the w block of the tableau), which cannot tie. −1: no positive entry (a ray).
+  int leaving_row(int variable) const {
+    const double eps = 1e-12 * std::max(1.0, t_.col(variable).cwiseAbs().maxCoeff());
+    int best = -1;
+    for (int i = 0; i < n_; ++i) {
+      if (t_(i, variable) <= eps) continue;
+      if (best < 0 || lexicographically_less(i, best, variable)) best = i;
+    }
+    return best;
+  }
+
+  Eigen::VectorXd z() const {
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(n_);
+    for (int i = 0; i < n_; ++i) {
+      const int v = basic(i);
+      if (v >= n_ && v < 2 * n_) z[v - n_] = value(i);
+    }
+    return z;
+  }
+
+ private:
+  // Whether row a's ratio vector (value, B⁻¹ row) / column is less than row b's.
+  bool lexicographically_less(int a, int b, int variable) const {
+    const double ca = t_(a, variable), cb = t_(b, variable);
+    const double ra = value(a) / ca, rb = value(b) / cb;
+    const double tolerance = 1e-12 * std::max({1.0, std::abs(ra), std::abs(rb)});
+    if (ra < rb - tolerance) return true;
+    if (ra > rb + tolerance) return false;
+    if (basic(a) == z0()) return true;  // z0 leaving ends the method
+    if (basic(b) == z0()) return false;
+    for (int j = 0; j < n_; ++j) {
+      const double la = t_(a, j) / ca, lb = t_(b, j) / cb;
+      if (la != lb) return la < lb;
+    }
+    return false;
+  }
+
+  int n_;
+  Eigen::MatrixXd t_;
+  std::vector<int> basis_;  // basis_[row]: the variable basic in that row
+};
+
+}  // namespace
+
+LemkeResult solve_lcp_lemke(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, int max_pivots) {
+  const int n = static_cast<int>(q.size());
+  require(M.rows() == n && M.cols() == n,
+          "Lemke: M is " + std::to_string(M.rows()) + " × " + std::to_string(M.cols()) +
+              ", q has " + std::to_string(n) + " entries");
+  require(M.allFinite() && q.allFinite(), "Lemke: M and q must be finite");
+  LemkeResult result;
+  result.z = Eigen::VectorXd::Zero(n);
+  if (n == 0 || q.minCoeff() >= 0.0) return result;  // z = 0, w = q ≥ 0
+  if (max_pivots <= 0) max_pivots = 50 * (n + 1);
+
+  Tableau t(M, q);
+  // z0 enters where q is most negative: every w becomes ≥ 0, that one 0, and leaves.
+  int row = 0;
+  for (int i = 1; i < n; ++i) {
+    if (q[i] < q[row]) row = i;
+  }
+  int leaving = t.basic(row);
+  t.pivot(row, t.z0());
+  result.pivots = 1;
+  while (result.pivots < max_pivots) {
+    const int entering = t.complement(leaving);
+    row = t.leaving_row(entering);
+    if (row < 0) {
+      result.status = LemkeStatus::ray;
+      return result;
+    }
+    leaving = t.basic(row);
+    t.pivot(row, entering);
+    ++result.pivots;
+    if (leaving == t.z0()) {
+      result.z = t.z();
+      return result;
+    }
+  }
+  result.status = LemkeStatus::out_of_pivots;
+  return result;
+}
+
+}  // namespace lamina
