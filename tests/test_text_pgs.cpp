@@ -25,31 +25,6 @@ double uniform(std::mt19937& rng, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(rng);
 }
 
-// A random MLCP with all three kinds of row of eq. 3-26: equality (−∞, ∞), contact [0, ∞), and
-// friction ±μ λc bounded by an earlier contact row (chapter 4 puts friction rows after their
-// contact row). Rows and bodies as random_system draws them (support/random_systems.h).
-RandomSystem random_mlcp_with_friction(std::mt19937& rng, int body_count, int row_count,
-                                       Layout layout) {
-  RandomSystem sys = random_system(rng, body_count, row_count, false, layout);
-  std::vector<int> contact_rows;
-  for (int i = 0; i < row_count; ++i) {
-    ConstraintRow& row = sys.rows[static_cast<std::size_t>(i)];
-    const double kind = uniform(rng, 0.0, 3.0);
-    if (kind < 1.0) continue;  // equality
-    if (kind < 2.0 || contact_rows.empty()) {
-      row.lambda_min = 0.0;  // contact
-      contact_rows.push_back(i);
-      continue;
-    }
-    std::uniform_int_distribution<std::size_t> pick(0, contact_rows.size() - 1);
-    row.friction_of = contact_rows[pick(rng)];
-    row.mu = uniform(rng, 0.2, 1.0);
-  }
-  sys.mlcp = assemble_mlcp(sys.bodies, sys.rows, dt);
-  sys.dense = build_dense_system(sys.bodies, sys.rows, dt);
-  return sys;
-}
-
 // The largest |x_i − y_i|.
 double largest_difference(const std::vector<double>& x, const Eigen::VectorXd& y) {
   double worst = 0.0;

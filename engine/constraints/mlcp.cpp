@@ -179,6 +179,14 @@ int Mlcp::friction_of(int i) const {
   return visit([&](const auto& rows) { return row_at(rows, i).friction_of; });
 }
 
+int Mlcp::friction_count(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).friction_count; });
+}
+
+double Mlcp::mu(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).mu; });
+}
+
 std::array<double, 2> Mlcp::bounds(int i, const double* lambda) const {
   return visit([&](const auto& rows) { return bounds_of(row_at(rows, i), lambda); });
 }

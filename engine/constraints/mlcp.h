@@ -61,7 +61,9 @@ class Mlcp {
   double zeta(int i) const;                   // ζ_i, in m/s or rad/s (eq. 3-15)
   double eta(int i) const;                    // η_i, in m/s² or rad/s² (eq. 3-16)
   double d(int i) const;                      // d_i = J_i · B_i, the diagonal of J B
-  int friction_of(int i) const;               // the contact row bounding a friction row, or −1
+  int friction_of(int i) const;               // the (first) contact row bounding a friction row, or −1
+  int friction_count(int i) const;            // how many contact rows from friction_of bound it
+  double mu(int i) const;                     // μ of a friction row (its bounds: ±μ Σ λc)
   // λ⁻_i and λ⁺_i for the current λ: fixed, or ±μ λc for a friction row (eq. 3-26).
   std::array<double, 2> bounds(int i, const double* lambda) const;
 

@@ -81,4 +81,27 @@ RandomSystem random_system(std::mt19937& rng, int body_count, int row_count, boo
   return sys;
 }
 
+RandomSystem random_mlcp_with_friction(std::mt19937& rng, int body_count, int row_count,
+                                       Layout layout) {
+  RandomSystem sys = random_system(rng, body_count, row_count, false, layout);
+  std::uniform_real_distribution<double> kind_of(0.0, 3.0), mu(0.2, 1.0);
+  std::vector<int> contact_rows;
+  for (int i = 0; i < row_count; ++i) {
+    ConstraintRow& row = sys.rows[static_cast<std::size_t>(i)];
+    const double kind = kind_of(rng);
+    if (kind < 1.0) continue;  // equality
+    if (kind < 2.0 || contact_rows.empty()) {
+      row.lambda_min = 0.0;  // contact
+      contact_rows.push_back(i);
+      continue;
+    }
+    std::uniform_int_distribution<std::size_t> pick(0, contact_rows.size() - 1);
+    row.friction_of = contact_rows[pick(rng)];
+    row.mu = mu(rng);
+  }
+  sys.mlcp = assemble_mlcp(sys.bodies, sys.rows, random_system_dt);
+  sys.dense = build_dense_system(sys.bodies, sys.rows, random_system_dt);
+  return sys;
+}
+
 }  // namespace lamina

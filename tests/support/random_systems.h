@@ -46,4 +46,10 @@ struct RandomSystem {
 RandomSystem random_system(std::mt19937& rng, int body_count, int row_count, bool bounded,
                            Layout layout = Layout::general);
 
+// A random MLCP with all three kinds of row of eq. 3-26: equality (−∞, ∞), contact [0, ∞), and
+// friction ±μ λc (μ in [0.2, 1]) bounded by an earlier contact row (chapter 4 puts friction
+// rows after their contact row). Rows and bodies as random_system draws them.
+RandomSystem random_mlcp_with_friction(std::mt19937& rng, int body_count, int row_count,
+                                       Layout layout = Layout::general);
+
 }  // namespace lamina

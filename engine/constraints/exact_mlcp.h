@@ -1,0 +1,32 @@
+// The step's MLCP (eq. 3-16, 3-23, 3-24, 3-26) solved exactly by Lemke's pivoting (lemke.h),
+// friction included: beyond the text, the ground truth chapter 6 measures PGS's λ against.
+//
+// Each row's λ becomes non-negative LCP variables, so that the MLCP is one LCP (M, q):
+//   a row with bounds [0, ∞) (a contact, a limit)   λ ≥ 0 ⟂ W ≥ 0
+//   an equality row (−∞, ∞)                        λ = p − m:  p ≥ 0 ⟂ W ≥ 0,  m ≥ 0 ⟂ −W ≥ 0
+//   a friction row, bounds ±μ Σ λc                 λ = p − m and a slip speed s:
+//        p ≥ 0 ⟂ W + s ≥ 0,   m ≥ 0 ⟂ −W + s ≥ 0,   s ≥ 0 ⟂ μ Σ λc − p − m ≥ 0
+// with W = J B λ − η. Inside the friction bounds s = 0 and W = 0 (sticking); at +μ Σ λc,
+// W = −s ≤ 0 (sliding, the friction at its bound); in the plane the Coulomb cone is exactly
+// these two directions, so this is Coulomb friction, not an approximation of it (Stewart and
+// Trinkle 1996; Anitescu and Potra 1997). M is not positive semidefinite once friction is in,
+// and Lemke may then end in a ray: the result says so.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "constraints/lemke.h"
+#include "constraints/mlcp.h"
+
+namespace lamina {
+
+struct ExactSolution {
+  LemkeStatus status = LemkeStatus::solved;
+  Eigen::VectorXd lambda;  // λ of every row when solved, in N or N·m
+  int pivots = 0;          // Lemke's pivots
+};
+
+// Throws std::invalid_argument for a row whose fixed bounds are not [0, ∞) or (−∞, ∞).
+ExactSolution solve_mlcp_exactly(const Mlcp& mlcp);
+
+}  // namespace lamina
