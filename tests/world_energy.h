@@ -1,23 +1,10 @@
-// The energy of a World's moving bodies, for the tests that bound what a run may gain.
+// The energy bounds of the tests that bound what a run may gain (mechanical_energy, the energy
+// itself, is the engine's: contact/world.h).
 #pragma once
 
 #include "contact/world.h"
-#include "kinematics/momentum.h"
 
 namespace lamina {
-
-// E = Σ (½ m vᵀv + ½ ωᵀ I ω) − m g·x over the dynamic bodies, in J: eq. 1-47 plus gravity's
-// potential energy, 0 at x = 0 (the text's E is kinetic only).
-inline double mechanical_energy(const World& world) {
-  const Vec3& g = world.settings().step.gravity;
-  double energy = 0.0;
-  for (const RigidBody& b : world.bodies()) {
-    if (b.is_static()) continue;
-    energy += kinetic_energy(b.mass, b.v, b.inertia_world(), b.angular_velocity) -
-              b.mass * g.dot(b.x);
-  }
-  return energy;
-}
 
 // Σ m |g| h: the energy of lifting every dynamic body by `height`, in J. The energy bounds are
 // stated in it.

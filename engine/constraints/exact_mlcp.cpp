@@ -1,10 +1,11 @@
 #include "constraints/exact_mlcp.h"
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "constraints/dense_system.h"
+#include <Eigen/Dense>
 #include "kinematics/require.h"
 
 namespace lamina {
@@ -29,10 +30,47 @@ Kind kind_of(const Mlcp& mlcp, int i) {
   return Kind::equality;
 }
 
+// J B (eq. 3-16) from the rows' blocks: (J B)_ij = Σ J_i's block of a body · B_j's block of the
+// same body, over the bodies rows i and j share. Rows that share no body give 0, so an island's
+// rows cost their count squared, not the world's bodies.
+Eigen::MatrixXd delassus(const Mlcp& mlcp) {
+  const int n = mlcp.row_count();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i) {
+    const std::array<int, 2> bi = mlcp.bodies_of(i);
+    for (int j = 0; j < n; ++j) {
+      const std::array<int, 2> bj = mlcp.bodies_of(j);
+      for (int k = 0; k < 2; ++k) {
+        for (int l = 0; l < 2; ++l) {
+          if (bi[k] >= 0 && bi[k] == bj[l]) A(i, j) += mlcp.jacobian(i, k).dot(mlcp.b_block(j, l));
+        }
+      }
+    }
+  }
+  return A;
+}
+
 }  // namespace
 
 ExactSolution solve_mlcp_exactly(const Mlcp& mlcp) {
   const int n = mlcp.row_count();
+  const Eigen::MatrixXd JB = delassus(mlcp);
+  bool equalities_only = true;
+  for (int i = 0; i < n && equalities_only; ++i) equalities_only = kind_of(mlcp, i) == Kind::equality;
+  if (equalities_only) {
+    // No bounds: J B λ = η is a linear system, J B symmetric positive definite for independent
+    // rows, solved by Cholesky with pivoting (LDLᵀ).
+    Eigen::VectorXd eta(n);
+    for (int i = 0; i < n; ++i) eta[i] = mlcp.eta(i);
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(JB);
+    ExactSolution out;
+    out.lambda = ldlt.solve(eta);
+    const bool solved = ldlt.info() == Eigen::Success && out.lambda.allFinite() &&
+                        (JB * out.lambda - eta).norm() <= 1e-9 * (1.0 + eta.norm());
+    out.status = solved ? LemkeStatus::solved : LemkeStatus::ray;
+    if (!solved) out.lambda.setZero();
+    return out;
+  }
   std::vector<Variables> vars;
   int count = 0;
   for (int i = 0; i < n; ++i) {
@@ -48,7 +86,6 @@ ExactSolution solve_mlcp_exactly(const Mlcp& mlcp) {
     P(i, vars[i].p) = 1.0;
     if (vars[i].m >= 0) P(i, vars[i].m) = -1.0;
   }
-  const Eigen::MatrixXd JB = dense_jacobian(mlcp) * dense_b_transpose(mlcp).transpose();
   const Eigen::MatrixXd W = JB * P;  // W = W·y − η, row by row
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(count, count);
   Eigen::VectorXd q = Eigen::VectorXd::Zero(count);

@@ -123,17 +123,18 @@ void Mlcp::assemble(const std::vector<RigidBody>& bodies, const std::vector<Cons
   });
 }
 
-void Mlcp::assemble_rows_of(const Mlcp& from, const std::vector<int>& rows,
-                            const std::vector<double>& zeta, double dt) {
+void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows) {
   planar_ = from.planar_;
   body_count_ = from.body_count_;
   auto select = [&](const auto& source, auto& packed) {
     packed.resize(rows.size());
     for (size_t i = 0; i < rows.size(); ++i) {
       packed[i] = source[static_cast<std::size_t>(rows[i])];
-      packed[i].zeta = zeta[i];
-      // eq. 3-16 for bodies at rest under no force: η = ζ/Δt
-      packed[i].eta = zeta[i] / dt;
+      if (packed[i].friction_of < 0) continue;
+      // the new index of its first contact row
+      const auto at = std::find(rows.begin(), rows.end(), packed[i].friction_of);
+      assert(at != rows.end());
+      packed[i].friction_of = static_cast<int>(at - rows.begin());
     }
   };
   if (planar_) {
@@ -141,6 +142,18 @@ void Mlcp::assemble_rows_of(const Mlcp& from, const std::vector<int>& rows,
   } else {
     select(from.general_rows_, general_rows_);
   }
+}
+
+void Mlcp::assemble_rows_of(const Mlcp& from, const std::vector<int>& rows,
+                            const std::vector<double>& zeta, double dt) {
+  assemble_subset(from, rows);
+  visit_mutable([&](auto& packed) {
+    for (size_t i = 0; i < rows.size(); ++i) {
+      packed[i].zeta = zeta[i];
+      // eq. 3-16 for bodies at rest under no force: η = ζ/Δt
+      packed[i].eta = zeta[i] / dt;
+    }
+  });
 }
 
 int Mlcp::row_count() const {

@@ -5,21 +5,6 @@
 namespace lamina {
 namespace {
 
-// Row i of a sweep, on the a_b of its two bodies (a2 unused for a one-body row).
-template <int N>
-void solve_row(const PackedRow<N>& row, size_t i, double* lambda, Block<N>& a1, Block<N>& a2) {
-  const bool two_bodies = row.two_bodies();
-  // Δ = (η_i − J_i · a) / d_i; 1/d_i is computed once per row when the row is assembled, so the
-  // sweep multiplies instead of dividing
-  const double delta = (row.eta - row_dot<N>(row.J, a1, a2, two_bodies)) * row.inverse_d;
-  const double old = lambda[i];
-  const auto [lo, hi] = bounds_of(row, lambda);
-  lambda[i] = std::max(lo, std::min(old + delta, hi));
-  const double diff = lambda[i] - old;
-  a1 += diff * row.B[0];
-  if (two_bodies) a2 += diff * row.B[1];
-}
-
 // One Gauss-Seidel sweep over the rows, each λ_i projected onto its bounds. Consecutive rows on
 // the same bodies (a pair's contact rows and their friction rows) keep their bodies' a_b in
 // local variables: the same arithmetic, without a trip through memory per row.
@@ -35,7 +20,7 @@ void sweep(const PackedRows<N>& packed, std::vector<Block<N>>& a_of_body, double
     Block<N> a1 = a[b1];
     Block<N> a2 = b2 >= 0 ? a[b2] : Block<N>::Zero();
     for (; i < count && rows[i].map[0] == b1 && rows[i].map[1] == b2; ++i) {
-      solve_row(rows[i], i, lambda, a1, a2);
+      pgs_row(rows[i], i, lambda, a1, a2);
     }
     a[b1] = a1;
     if (b2 >= 0) a[b2] = a2;

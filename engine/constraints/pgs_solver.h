@@ -10,12 +10,31 @@
 // writes λ[b1], λ[b2]), and a one-body row (Jmap[1] = −1) never reads a[−1].
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <vector>
 
 #include "constraints/mlcp.h"
 #include "constraints/sweep_settings.h"
 
 namespace lamina {
+
+// Row i of a sweep (eq. 3-24), on the a_b = (B λ)_b of its two bodies (a2 unused for a one-body
+// row): Δ = (η_i − J_i · a) / d_i, λ_i ← clamp(λ_i + Δ, λ⁻_i, λ⁺_i), a ← a + (λ_i new − old) B_i.
+// The one row update of every sweep (PgsSolver's, chapter 6's block sweep).
+template <int N>
+void pgs_row(const PackedRow<N>& row, std::size_t i, double* lambda, Block<N>& a1, Block<N>& a2) {
+  const bool two_bodies = row.two_bodies();
+  // Δ = (η_i − J_i · a) / d_i; 1/d_i is computed once per row when the row is assembled, so the
+  // sweep multiplies instead of dividing
+  const double delta = (row.eta - row_dot<N>(row.J, a1, a2, two_bodies)) * row.inverse_d;
+  const double old = lambda[i];
+  const auto [lo, hi] = bounds_of(row, lambda);
+  lambda[i] = std::max(lo, std::min(old + delta, hi));
+  const double diff = lambda[i] - old;
+  a1 += diff * row.B[0];
+  if (two_bodies) a2 += diff * row.B[1];
+}
 
 // PGS's working memory, a = B λ per body, kept from solve to solve so that a World step
 // allocates nothing once its buffers have grown.

@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "constraints/jacobian_rows.h"
+#include "contact/step_method.h"
+#include "kinematics/momentum.h"
 #include "kinematics/require.h"
 #include "motion/integrator.h"
 
@@ -28,34 +30,16 @@ void validate(const WorldSettings& s) {
   validate(s.cache);
 }
 
-// λ kept in a std::vector, seen as an Eigen vector (a copy, for a report).
-Eigen::VectorXd copy_of(const std::vector<double>& lambda) {
-  return Eigen::Map<const Eigen::VectorXd>(lambda.data(), static_cast<Eigen::Index>(lambda.size()));
-}
-
-// PGS on λ in place, λ_exp on entry; with a report (`into`), also records the MLCP as solved,
-// λ_exp, the residual after every sweep and λ.
-void solve_recording(PgsSolver& pgs, const Mlcp& mlcp, int iterations, std::vector<double>& lambda,
-                     StepReport* into) {
-  if (into != nullptr) into->lambda_exp = copy_of(lambda);
-  SweepResult sweeps;  // the sweeps run and their residuals; λ itself stays in `lambda`
-  pgs.solve(mlcp, lambda.data(), {iterations, 0.0, into != nullptr}, sweeps);
-  if (into == nullptr) return;
-  into->mlcp = mlcp;
-  sweeps.lambda = copy_of(lambda);
-  into->solution = std::move(sweeps);
-}
-
-// No point deeper than the slop and no gap to close: every ζ ≤ 0, so λ = 0 solves the position
-// MLCP (W = −η ≥ 0, eq. 3-24) and PGS started from λ = 0 keeps it: no push-out this step.
-// Box2D's position pass stops early in the same case.
-bool nothing_to_push(const std::vector<double>& zeta) {
-  return std::all_of(zeta.begin(), zeta.end(), [](double z) { return z <= 0.0; });
-}
-
 }  // namespace
 
-World::World(const WorldSettings& settings) : settings_(settings) { validate(settings_); }
+World::World(const WorldSettings& settings) : settings_(settings) {
+  validate(settings_);
+  if (settings_.method) method_ = settings_.method();
+}
+
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
 
 int World::add_body(const RigidBody& body, const Shape& shape, const Material& material) {
   const std::string name = "body " + std::to_string(bodies_.size());
@@ -100,6 +84,7 @@ int World::add_joint(std::unique_ptr<Constraint> joint) {
     const auto at = std::lower_bound(jointed_.begin(), jointed_.end(), pair);
     if (at == jointed_.end() || !(*at == pair)) jointed_.insert(at, pair);
   }
+  joint_views_.push_back(joint.get());
   joints_.push_back({std::move(joint), RowRange{}});
   return static_cast<int>(joints_.size()) - 1;
 }
@@ -128,9 +113,15 @@ void World::advance(WorldReport* report) {
   detect_collisions();     // 2
   update_cache();          // 3
   build_rows();            // 4
-  solve(report);           // 5
-  add_constraint_forces(); // 6
-  integrate_bodies();      // 7
+  if (method_) {
+    take_method_step(report);  // 5–7, chapter 6's way
+  } else {
+    solve(report);             // 5
+    // 6. eq. 3-11, 5-9: F_c = Jᵀ λ
+    velocity_.add_constraint_forces(bodies_, lambda_.data());
+    // 7. eq. 2-1..2-8 under F_ext + F_c, with split impulse's push-out
+    integrate_with_push_out(bodies_, split_impulse_.push_out(), settings_.step.dt);
+  }
   time_ += settings_.step.dt;
   steps_taken_in_process.fetch_add(1, std::memory_order_relaxed);
 }
@@ -189,57 +180,42 @@ void World::solve(WorldReport* report) {
   // eq. 3-24 by Projected Gauss-Seidel, friction bounds ±μ λc read as λc changes
   solve_recording(pgs_, velocity_, settings_.step.iterations, lambda_,
                   report != nullptr ? &report->velocity : nullptr);
+  remember_lambdas(report);
+  split_impulse_.solve(velocity_, cache_.pairs(), settings_.contact, settings_.step,
+                       settings_.position_iterations, pgs_,
+                       report != nullptr ? &report->position : nullptr);
+}
+
+void World::take_method_step(WorldReport* report) {
+  const double dt = settings_.step.dt;
+  unconstrained_velocities(bodies_, dt, unconstrained_);
+  velocity_.assemble(bodies_, rows_, unconstrained_, dt);
+  joint_rows_.clear();
+  for (const Joint& joint : joints_) joint_rows_.push_back(joint.rows);
+  if (report != nullptr) {
+    report->velocity.mlcp = velocity_;
+    report->velocity.lambda_exp = Eigen::Map<const Eigen::VectorXd>(
+        lambda_.data(), static_cast<Eigen::Index>(lambda_.size()));
+  }
+  const StepProblem problem{settings_,    rows_,       first_joint_row_, cache_.pairs(),
+                            joint_views_, joint_rows_, velocity_};
+  method_->take_step(problem, bodies_, lambda_, report);
+  if (report != nullptr) {
+    report->velocity.solution.lambda = Eigen::Map<const Eigen::VectorXd>(
+        lambda_.data(), static_cast<Eigen::Index>(lambda_.size()));
+    report->velocity.solution.iterations =
+        static_cast<int>(report->velocity.solution.residuals.size());
+  }
+  remember_lambdas(report);
+}
+
+void World::remember_lambdas(WorldReport* report) {
   cache_.store_lambdas(lambda_.data());
   joint_warm_start_.remember(rows_.data() + first_joint_row_, rows_.data() + rows_.size(),
                              lambda_.data() + first_joint_row_);
   if (report != nullptr) {
     report->pairs = cache_.pairs();
     for (const Joint& joint : joints_) report->joints.push_back(joint.rows);
-  }
-  solve_positions(report);
-}
-
-void World::solve_positions(WorldReport* report) {
-  push_out_.clear();
-  if (settings_.contact.correction != PositionCorrection::split_impulse) return;
-  const double dt = settings_.step.dt;
-  // The velocity MLCP's contact rows again, each asking J V_p ≥ its push-out (or gap) ζ
-  position_targets(cache_.pairs(), settings_.contact, settings_.step, position_rows_,
-                   position_zeta_);
-  if (report == nullptr && nothing_to_push(position_zeta_)) return;  // a report shows the sweeps
-  // eq. 3-16 for the push-out alone: the bodies start from rest under no force, so η = ζ/Δt
-  position_.assemble_rows_of(velocity_, position_rows_, position_zeta_, dt);
-  position_lambda_.assign(position_rows_.size(), 0.0);
-  solve_recording(pgs_, position_, settings_.position_iterations, position_lambda_,
-                  report != nullptr ? &report->position : nullptr);
-  // The push-out velocity of each body: M⁻¹ Jᵀ λ Δt = B λ Δt
-  push_out_.resize(bodies_.size());
-  for (size_t b = 0; b < bodies_.size(); ++b) {
-    push_out_[b] = pgs_.velocity_change(static_cast<int>(b)) * dt;
-  }
-}
-
-void World::add_constraint_forces() {
-  // eq. 3-11, 5-9: F_c = Jᵀ λ
-  velocity_.add_constraint_forces(bodies_, lambda_.data());
-}
-
-void World::integrate_bodies() {
-  for (size_t i = 0; i < bodies_.size(); ++i) {
-    RigidBody& body = bodies_[i];
-    if (body.is_static()) {
-      body.clear_forces();
-      continue;
-    }
-    // Split impulse: the push-out velocity moves the body in this step and is then taken back.
-    const Vec6 push = push_out_.empty() ? Vec6::Zero() : push_out_[i];
-    body.v += push.head<3>();
-    body.angular_velocity += push.tail<3>();
-    // eq. 2-1..2-8 under F_ext + F_c
-    integrate(body, settings_.step.dt);
-    body.v -= push.head<3>();
-    body.angular_velocity -= push.tail<3>();
-    body.clear_forces();
   }
 }
 
@@ -249,6 +225,17 @@ std::optional<std::size_t> first_non_finite_body(const World& world) {
     if (!bodies[i].has_finite_state()) return i;
   }
   return std::nullopt;
+}
+
+double mechanical_energy(const World& world) {
+  const Vec3& g = world.settings().step.gravity;
+  double energy = 0.0;
+  for (const RigidBody& b : world.bodies()) {
+    if (b.is_static()) continue;
+    // eq. 1-47 and m g h
+    energy += kinetic_energy(b.mass, b.v, b.inertia_world(), b.angular_velocity) - b.mass * g.dot(b.x);
+  }
+  return energy;
 }
 
 }  // namespace lamina

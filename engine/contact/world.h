@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -31,9 +32,12 @@
 #include "constraints/step_settings.h"
 #include "contact/contact_cache.h"
 #include "contact/contact_rows.h"
+#include "contact/split_impulse.h"
 #include "contact/world_report.h"
 
 namespace lamina {
+
+class StepMethod;  // step_method.h: steps 5–7 taken another way (chapter 6)
 
 struct WorldSettings {
   std::string solver = "pgs";           // the method these switches make (solvers.h), for captions
@@ -41,12 +45,17 @@ struct WorldSettings {
   int position_iterations = 3;          // PGS sweeps of the split-impulse position MLCP (Box2D: 3)
   ContactSettings contact;              // slop, restitution, position correction
   CacheSettings cache;                  // the contact cache on or off, and its margins
+  // Makes the method that takes steps 5–7 (step_method.h); empty: the World's own PGS step.
+  std::function<std::unique_ptr<StepMethod>()> method;
 };
 
 class World {
  public:
   // Throws std::invalid_argument naming the first setting out of range.
   explicit World(const WorldSettings& settings = WorldSettings());
+  ~World();
+  World(World&&) noexcept;
+  World& operator=(World&&) noexcept;
 
   // Adds a body with its shape and material and returns its index. Throws
   // std::invalid_argument if the body's state is not finite or leaves the x–y plane (x_z, v_z,
@@ -103,9 +112,8 @@ class World {
   void update_cache();
   void build_rows();
   void solve(WorldReport* report);
-  void solve_positions(WorldReport* report);
-  void add_constraint_forces();
-  void integrate_bodies();
+  void take_method_step(WorldReport* report);
+  void remember_lambdas(WorldReport* report);
 
   WorldSettings settings_;
   double time_ = 0.0;                  // t, in s
@@ -113,6 +121,8 @@ class World {
   std::vector<Shape> shapes_;          // bodies_[i]'s shape
   std::vector<Material> materials_;    // bodies_[i]'s friction and restitution
   std::vector<Joint> joints_;          // the joints, their rows after the contacts'
+  std::vector<const Constraint*> joint_views_;  // joints_' constraints, for a StepMethod
+  std::unique_ptr<StepMethod> method_;  // steps 5–7 when the settings name one (chapter 6)
   std::vector<BodyPair> jointed_;      // pairs of bodies joined by a joint, sorted: never collide
   ContactCache cache_;                 // the contacts kept from step to step
   WarmStart joint_warm_start_;         // the joints' λ from the last step
@@ -129,16 +139,17 @@ class World {
   std::vector<Vec6> unconstrained_;          // V/Δt + M⁻¹ F_ext per body (eq. 3-16), m/s², rad/s²
   Mlcp velocity_;                            // the velocity MLCP (eq. 3-16), assembled once
   std::vector<double> lambda_;               // its λ, in N: the warm start λ_exp, then solved
-  std::vector<int> position_rows_;           // split impulse: each contact's row in velocity_
-  std::vector<double> position_zeta_;        // and the push-out ζ of its position row, in m/s
-  Mlcp position_;                            // the position MLCP: those rows of velocity_
-  std::vector<double> position_lambda_;      // its λ, in N
+  SplitImpulse split_impulse_;               // the position MLCP and each body's push-out
   PgsSolver pgs_;                            // the sweeps' a = B λ, for both MLCPs in turn
-  std::vector<Vec6> push_out_;               // split impulse: each body's [v; ω] push-out, m/s, rad/s
+  std::vector<RowRange> joint_rows_;         // each joint's rows, for a StepMethod
 };
 
 // The first body (in the order added) whose x, q, v or ω is no longer finite: where a run that
 // diverged shows it. Nothing while every state is finite.
 std::optional<std::size_t> first_non_finite_body(const World& world);
+
+// E = Σ (½ m vᵀv + ½ ωᵀ I ω) − m g·x over the moving bodies, in J: eq. 1-47 plus gravity's
+// potential energy, 0 at x = 0 (the text's E is kinetic only).
+double mechanical_energy(const World& world);
 
 }  // namespace lamina

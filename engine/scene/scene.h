@@ -57,7 +57,7 @@ struct JointDescription {
 struct Scene {
   std::string name = "scene";
   std::string description;           // one line, shown by `lamina scenes`
-  std::string solver = "pgs";        // the method the World steps with (contact/solvers.h)
+  std::string solver = "islands";    // the method the World steps with (beyond/methods.h)
   StepSettings step;                 // g (in the plane), Δt, β and the PGS sweeps per step
   int steps = 600;                   // how many steps `lamina run` takes unless told
   std::vector<BodyDescription> bodies;

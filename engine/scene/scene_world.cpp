@@ -11,7 +11,7 @@
 #include "constraints/distance_constraint.h"
 #include "constraints/incline_constraint.h"
 #include "constraints/revolute_joint.h"
-#include "contact/solvers.h"
+#include "beyond/methods.h"
 
 namespace lamina {
 namespace {
@@ -87,7 +87,7 @@ auto at_path(const std::string& path, Add&& add) {
 WorldSettings world_settings(const Scene& scene) {
   WorldSettings settings;
   settings.step = scene.step;
-  return with_solver(settings, scene.solver);
+  return with_method(settings, scene.solver);
 }
 
 World build_world(const Scene& scene, const WorldSettings& settings) {

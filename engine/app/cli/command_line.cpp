@@ -6,7 +6,7 @@
 
 #include "app/harness/render_request.h"
 #include "app/cli/exit_codes.h"
-#include "contact/solvers.h"
+#include "beyond/methods.h"
 #include "scene/scene_limits.h"
 
 namespace lamina::cli {
@@ -50,10 +50,11 @@ void add_run_options(CLI::App& run, RunOptions& o, std::string& explain_format) 
       ->type_name("B")->check(range_of(scene_limits::beta));
   run.add_flag("--no-cache", o.no_cache, "solve without the contact cache (no warm start, Fig 4-2..4-5)");
   std::vector<std::string> solvers;
-  for (const SolverInfo& s : solver_list()) solvers.push_back(s.name);
+  for (const SolverInfo& s : method_list()) solvers.push_back(s.name);
   add_optional(run, "--solver", o.solver,
-               "the method: text (the text's own) or pgs (Lamina's additions); `lamina solvers` "
-               "says what each does (default: the scene's `solver`)")
+               "the method: text (the text's own), pgs (Lamina's additions to it), block, exact or "
+               "islands (chapter 6, beyond the text); `lamina solvers` says what each does "
+               "(default: the scene's `solver`, islands when it has none)")
       ->type_name("NAME")->check(CLI::IsMember(solvers));
   auto* trace = add_optional(run, "--trace", o.trace,
                              "write every step to FILE: JSON Lines, or CSV when FILE ends in .csv "

@@ -10,7 +10,7 @@
 #include "app/cli/scene_source.h"
 #include "app/harness/format.h"
 #include "app/cli/simulation.h"
-#include "contact/solvers.h"
+#include "beyond/methods.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_json.h"
 #include "scene/scene_world.h"
@@ -19,8 +19,8 @@ namespace lamina::cli {
 
 void list_solvers() {
   std::size_t width = 0;
-  for (const SolverInfo& s : solver_list()) width = std::max(width, s.name.size());
-  for (const SolverInfo& s : solver_list()) {
+  for (const SolverInfo& s : method_list()) width = std::max(width, s.name.size());
+  for (const SolverInfo& s : method_list()) {
     std::printf("%-*s  %s\n", static_cast<int>(width), s.name.c_str(), s.departures.c_str());
   }
 }

@@ -1,0 +1,123 @@
+#include "beyond/island_method.h"
+
+#include "beyond/island_solve.h"
+#include "beyond/islands.h"
+#include "motion/integrator.h"
+
+namespace lamina {
+namespace {
+
+// Moves a body by its push-out [v; ω] over Δt, as chapter 2's step moves it by a velocity
+// (eq. 2-5, 2-6), leaving its velocity as it was.
+void push_out_body(RigidBody& body, const Vec6& push, double dt) {
+  const Vec3 v = body.v, omega = body.angular_velocity;
+  body.v = push.head<3>();
+  body.angular_velocity = push.tail<3>();
+  integrate(body, dt);
+  body.v = v;
+  body.angular_velocity = omega;
+}
+
+class IslandMethod final : public StepMethod {
+ public:
+  void take_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
+                 std::vector<double>& lambda, WorldReport* report) override {
+    skip_.assign(bodies.size(), 0);
+    const std::vector<Island> islands = find_islands(problem.velocity, problem.first_joint_row);
+    for (const Island& island : islands) {
+      if (island.joint_rows > 0 && island.lcp_size <= exact_island_limit) {
+        substep(problem, island, bodies, lambda);
+        for (const int b : island.bodies) skip_[static_cast<std::size_t>(b)] = 1;
+      } else {
+        solve_island(problem.velocity, island, problem.settings.step.iterations, scratch_, pgs_,
+                     lambda);
+      }
+    }
+    if (report != nullptr) {
+      report->velocity.solution.residuals = {problem.velocity.residual(lambda.data())};
+    }
+    finish_step(problem, bodies, lambda, skip_, split_, pgs_, report);
+    const std::vector<Vec6>& push = split_.push_out();
+    if (push.empty()) return;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (skip_[b]) push_out_body(bodies[b], push[b], problem.settings.step.dt);
+    }
+  }
+
+ private:
+  // Advances the island's bodies by Δt in joint_substeps substeps, each solving the island's rows
+  // exactly (contact rows as step 4 wrote them, joints' rows written again at the substep's
+  // poses with Δt / joint_substeps) and taking chapter 2's step. λ becomes the substeps' mean.
+  void substep(const StepProblem& problem, const Island& island, std::vector<RigidBody>& bodies,
+               std::vector<double>& lambda) {
+    const double h = problem.settings.step.dt / joint_substeps;
+    const double beta = problem.settings.step.beta;
+    // The island's rows, numbered from 0; a friction row's contact row renumbered with them.
+    rows_.clear();
+    std::vector<int> local_of(problem.rows.size(), -1);
+    for (const int r : island.rows) {
+      local_of[static_cast<std::size_t>(r)] = static_cast<int>(rows_.size());
+      rows_.push_back(problem.rows[static_cast<std::size_t>(r)]);
+    }
+    for (ConstraintRow& row : rows_) {
+      if (row.friction_of >= 0) row.friction_of = local_of[static_cast<std::size_t>(row.friction_of)];
+    }
+    // Each joint of the island and where its rows sit among the island's.
+    std::vector<std::pair<const Constraint*, int>> joints;
+    for (std::size_t j = 0; j < problem.joints.size(); ++j) {
+      const RowRange range = problem.joint_rows[j];
+      if (range.count > 0 && local_of[static_cast<std::size_t>(range.first)] >= 0) {
+        joints.emplace_back(problem.joints[j], local_of[static_cast<std::size_t>(range.first)]);
+      }
+    }
+    std::vector<Vec6> external(island.bodies.size());  // F_ext, kept for every substep
+    for (std::size_t k = 0; k < external.size(); ++k) {
+      external[k] = external_force_of(bodies[static_cast<std::size_t>(island.bodies[k])]);
+    }
+    std::vector<double> local(island.rows.size()), mean(island.rows.size(), 0.0);
+    for (std::size_t i = 0; i < local.size(); ++i) local[i] = lambda[static_cast<std::size_t>(island.rows[i])];
+    Island all;  // the substep's MLCP is the island's rows, all of them
+    all.lcp_size = island.lcp_size;
+    for (int i = 0; i < static_cast<int>(local.size()); ++i) all.rows.push_back(i);
+    for (int s = 0; s < joint_substeps; ++s) {
+      for (const auto& [joint, first] : joints) {
+        written_.clear();
+        joint->write_rows(bodies, h, beta, written_);
+        for (std::size_t k = 0; k < written_.size(); ++k) rows_[static_cast<std::size_t>(first) + k] = written_[k];
+      }
+      for (std::size_t k = 0; k < external.size(); ++k) {
+        RigidBody& body = bodies[static_cast<std::size_t>(island.bodies[k])];
+        body.force = external[k].head<3>();
+        body.torque = external[k].tail<3>();
+      }
+      // eq. 3-16 for the substep, solved exactly (PGS if Lemke gives up)
+      unconstrained_velocities(bodies, h, unconstrained_);
+      substep_mlcp_.assemble(bodies, rows_, unconstrained_, h);
+      solve_island(substep_mlcp_, all, problem.settings.step.iterations, scratch_, pgs_, local);
+      // eq. 3-11: F_c = Jᵀ λ, then chapter 2's step over h
+      substep_mlcp_.add_constraint_forces(bodies, local.data());
+      for (const int b : island.bodies) {
+        RigidBody& body = bodies[static_cast<std::size_t>(b)];
+        integrate(body, h);
+        body.clear_forces();
+      }
+      for (std::size_t i = 0; i < local.size(); ++i) mean[i] += local[i] / joint_substeps;
+    }
+    for (std::size_t i = 0; i < mean.size(); ++i) lambda[static_cast<std::size_t>(island.rows[i])] = mean[i];
+  }
+
+  Mlcp scratch_;                         // an island's MLCP
+  Mlcp substep_mlcp_;                    // a substep's MLCP of the island's rows
+  PgsSolver pgs_;                        // sweeps of large islands and of the push-out
+  SplitImpulse split_;                   // the position MLCP and the push-out
+  std::vector<unsigned char> skip_;      // bodies a substepped island has advanced already
+  std::vector<ConstraintRow> rows_;      // a substepped island's rows
+  std::vector<ConstraintRow> written_;   // a joint's rows written again
+  std::vector<Vec6> unconstrained_;      // V/h + M⁻¹ F_ext per body, for a substep
+};
+
+}  // namespace
+
+std::unique_ptr<StepMethod> make_island_method() { return std::make_unique<IslandMethod>(); }
+
+}  // namespace lamina

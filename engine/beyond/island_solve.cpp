@@ -1,0 +1,55 @@
+#include "beyond/island_solve.h"
+
+#include <cmath>
+
+#include "constraints/exact_mlcp.h"
+
+namespace lamina {
+
+IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlcp& scratch,
+                         PgsSolver& pgs, std::vector<double>& lambda) {
+  scratch.assemble_subset(mlcp, island.rows);
+  std::vector<double> local(island.rows.size());
+  for (std::size_t i = 0; i < local.size(); ++i) local[i] = lambda[static_cast<std::size_t>(island.rows[i])];
+  IslandSolve how = IslandSolve::pgs;
+  // A state gone non-finite is left to PGS, which carries it into the bodies, where the run
+  // that diverged is stopped and says so (first_non_finite_body); pivoting would refuse it.
+  bool finite = true;
+  for (int i = 0; i < scratch.row_count() && finite; ++i) {
+    finite = std::isfinite(scratch.eta(i)) && std::isfinite(scratch.d(i));
+  }
+  if (finite && island.lcp_size <= exact_island_limit) {
+    const ExactSolution exact = solve_mlcp_exactly(scratch);
+    if (exact.status == LemkeStatus::solved) {
+      for (std::size_t i = 0; i < local.size(); ++i) local[i] = exact.lambda[static_cast<Eigen::Index>(i)];
+      how = IslandSolve::exact;
+    }
+  }
+  if (how == IslandSolve::pgs) {
+    SweepResult sweeps_run;
+    pgs.solve(scratch, local.data(), {sweeps, 0.0, false}, sweeps_run);
+  }
+  for (std::size_t i = 0; i < local.size(); ++i) lambda[static_cast<std::size_t>(island.rows[i])] = local[i];
+  return how;
+}
+
+void finish_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
+                 const std::vector<double>& lambda, const std::vector<unsigned char>& skip,
+                 SplitImpulse& split, PgsSolver& pgs, WorldReport* report) {
+  const WorldSettings& s = problem.settings;
+  split.solve(problem.velocity, problem.pairs, s.contact, s.step, s.position_iterations, pgs,
+              report != nullptr ? &report->position : nullptr);
+  // eq. 3-11, 5-9: F_c = Jᵀ λ (nothing on a skipped body: its rows' λ are zero here)
+  problem.velocity.add_constraint_forces(bodies, lambda.data());
+  const std::vector<Vec6>& push = split.push_out();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (!skip.empty() && skip[b]) {
+      bodies[b].clear_forces();  // advanced already: its F_c was taken in its own steps
+      continue;
+    }
+    // eq. 2-1..2-8 under F_ext + F_c, with the push-out
+    integrate_with_push_out(bodies[b], push.empty() ? Vec6::Zero() : push[b], s.step.dt);
+  }
+}
+
+}  // namespace lamina

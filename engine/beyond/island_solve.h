@@ -1,0 +1,39 @@
+// What chapter 6's methods share around their own solve of the velocity MLCP: an island solved
+// exactly or, past a size or when Lemke gives up, by PGS; and steps 6–7 after the solve, as the
+// World takes them (split impulse's push-out, F_c = Jᵀ λ, chapter 2's step).
+#pragma once
+
+#include <vector>
+
+#include "beyond/islands.h"
+#include "constraints/mlcp.h"
+#include "constraints/pgs_solver.h"
+#include "contact/split_impulse.h"
+#include "contact/step_method.h"
+
+namespace lamina {
+
+// The largest island solved exactly: its LCP's variables (Island::lcp_size). Lemke's pivots cost
+// the square of the variables each and take about as many pivots as variables; 240 is a stack of
+// 40 boxes with friction, solved in about 10 ms.
+constexpr int exact_island_limit = 240;
+
+// How an island's λ was found.
+enum class IslandSolve { exact, pgs };
+
+// Solves the island's rows of `mlcp` (its MLCP, eq. 3-24, on its own: islands.h) into their λ:
+// exactly (exact_mlcp.h) when the island has at most exact_island_limit variables and the solve
+// ends in a solution, else by `sweeps` PGS sweeps from the λ there. `scratch` and `pgs` are
+// working memory.
+IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlcp& scratch,
+                         PgsSolver& pgs, std::vector<double>& lambda);
+
+// Steps 6 and 7 after the velocity solve: the split-impulse push-out (when the settings ask for
+// it, recorded in the report), F_c = Jᵀ λ and chapter 2's step for every body whose `skip` entry
+// is 0 (skip empty: every body); a skipped body (advanced by the method itself) only has its
+// forces cleared.
+void finish_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
+                 const std::vector<double>& lambda, const std::vector<unsigned char>& skip,
+                 SplitImpulse& split, PgsSolver& pgs, WorldReport* report);
+
+}  // namespace lamina

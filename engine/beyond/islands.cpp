@@ -1,0 +1,67 @@
+#include "beyond/islands.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace lamina {
+namespace {
+
+// Union-find's root of body b, halving the path on the way.
+int root_of(std::vector<int>& parent, int b) {
+  while (parent[static_cast<std::size_t>(b)] != b) {
+    int& p = parent[static_cast<std::size_t>(b)];
+    p = parent[static_cast<std::size_t>(p)];
+    b = p;
+  }
+  return b;
+}
+
+// The variables of row i in the LCP of exact_mlcp.h.
+int lcp_variables(const Mlcp& mlcp, int i) {
+  if (mlcp.friction_of(i) >= 0) return 3;  // p, m and the slip speed s
+  const double none = 0.0;
+  const std::array<double, 2> b = mlcp.bounds(i, &none);
+  return std::isinf(b[0]) ? 2 : 1;  // λ = p − m, or λ itself
+}
+
+}  // namespace
+
+std::vector<Island> find_islands(const Mlcp& mlcp, std::size_t first_joint_row) {
+  std::vector<int> parent(static_cast<std::size_t>(mlcp.body_count()));
+  std::iota(parent.begin(), parent.end(), 0);
+  const int rows = mlcp.row_count();
+  for (int i = 0; i < rows; ++i) {
+    const std::array<int, 2> b = mlcp.bodies_of(i);
+    if (b[1] < 0) continue;
+    const int r0 = root_of(parent, b[0]);
+    const int r1 = root_of(parent, b[1]);
+    // the smaller root stays: the same rows join the same way whatever the order of unions
+    if (r0 != r1) parent[static_cast<std::size_t>(std::max(r0, r1))] = std::min(r0, r1);
+  }
+  std::vector<Island> islands;
+  std::vector<int> island_of_root(parent.size(), -1);
+  std::vector<unsigned char> seen(parent.size(), 0);
+  for (int i = 0; i < rows; ++i) {
+    const std::array<int, 2> b = mlcp.bodies_of(i);
+    const std::size_t root = static_cast<std::size_t>(root_of(parent, b[0]));
+    if (island_of_root[root] < 0) {
+      island_of_root[root] = static_cast<int>(islands.size());
+      islands.emplace_back();
+    }
+    Island& island = islands[static_cast<std::size_t>(island_of_root[root])];
+    island.rows.push_back(i);
+    if (static_cast<std::size_t>(i) >= first_joint_row) ++island.joint_rows;
+    island.lcp_size += lcp_variables(mlcp, i);
+    for (const int body : b) {
+      if (body < 0 || seen[static_cast<std::size_t>(body)]) continue;
+      seen[static_cast<std::size_t>(body)] = 1;
+      island.bodies.push_back(body);
+    }
+  }
+  for (Island& island : islands) std::sort(island.bodies.begin(), island.bodies.end());
+  return islands;
+}
+
+}  // namespace lamina

@@ -1,0 +1,32 @@
+// Islands (beyond the text): the rows of a step's MLCP split into groups that share no moving
+// body. Two rows are in one island when a chain of rows joins their bodies; a static body joins
+// nothing (it holds no block in any row, jacobian_rows.h). The MLCP of eq. 3-24 then splits into
+// one MLCP per island, each solvable on its own and by a method of its own: J B is block
+// diagonal over the islands, and a friction row's bounds read only its own contact rows, which
+// are in its island.
+//
+// Box2D's islands serve sleeping and parallelism; here they let a method pick a solve per island
+// (island_method.h). Found by union-find over the rows' bodies (Tarjan 1975), in row order, so
+// the same rows give the same islands, numbered by their first row.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "constraints/mlcp.h"
+
+namespace lamina {
+
+struct Island {
+  std::vector<int> rows;    // its rows, ascending
+  std::vector<int> bodies;  // the moving bodies they touch, ascending
+  int joint_rows = 0;       // how many of its rows are joints' (at or after first_joint_row)
+  int lcp_size = 0;         // the variables of its exact solve (exact_mlcp.h): 1 per one-sided
+                            // row, 2 per equality row, 3 per friction row
+};
+
+// The islands of the MLCP's rows, ordered by their first row. Rows from first_joint_row on are
+// joints' rows.
+std::vector<Island> find_islands(const Mlcp& mlcp, std::size_t first_joint_row);
+
+}  // namespace lamina

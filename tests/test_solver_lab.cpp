@@ -1,0 +1,197 @@
+// Chapter 6, beyond the text (engine/beyond/): the islands a step's rows split into, the 2 × 2
+// block solve against the exact answer of its LCP, the `exact` method against pivoting on the
+// step's MLCP, and the bars of Lamina's own method `islands` on the scenes that break PGS
+// (docs/ch6-beyond-the-text.md): 60 Hz, 10 s, no sleeping.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "app/views/beyond/solver_lab.h"
+#include "beyond/islands.h"
+#include "beyond/methods.h"
+#include "constraints/exact_mlcp.h"
+#include "contact/world.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_world.h"
+
+using namespace lamina;
+
+namespace {
+
+constexpr int ten_seconds = 600;  // steps of 1/60 s
+
+World scene_world(const std::string& name, const std::string& method) {
+  Scene scene = builtin_scene(name);
+  scene.solver = method;
+  return build_world(scene, world_settings(scene));
+}
+
+// A step of the world with its report.
+WorldReport step_reported(World& world) {
+  WorldReport report;
+  world.step(report);
+  return report;
+}
+
+}  // namespace
+
+TEST_SUITE("SolverLab") {
+  TEST_CASE("islands: rows joined by moving bodies, never by a static one") {
+    // Two stacks of three side by side, 3 m apart, on one ground: the ground is static, so they
+    // are two islands (4 bodies would be one if the ground joined them). Each stack: 3 pairs of
+    // 2 contact rows and 1 friction row = 9 rows, 6 one-sided and 3 friction: 6 + 3·3 = 15
+    // LCP variables.
+    Scene scene = builtin_scene("vertical-stack:3");
+    const std::size_t boxes = scene.bodies.size();
+    for (std::size_t b = 1; b < boxes; ++b) {
+      BodyDescription copy = scene.bodies[b];
+      copy.name += "-right";
+      copy.position[0] += 3.0;
+      scene.bodies.push_back(copy);
+    }
+    scene.solver = "pgs";
+    World world = build_world(scene, world_settings(scene));
+    world.step();  // steps 0 and 1 find one point per pair, step 2 both corners (Fig 4-2..4-5)
+    world.step();
+    const WorldReport report = step_reported(world);
+    const std::vector<Island> islands = find_islands(report.velocity.mlcp, report.velocity.mlcp.row_count());
+    REQUIRE(islands.size() == 2);
+    std::vector<int> all;
+    for (const Island& island : islands) {
+      CHECK(island.rows.size() == 9);
+      CHECK(island.bodies.size() == 3);
+      CHECK(island.lcp_size == 15);
+      CHECK(island.joint_rows == 0);
+      all.insert(all.end(), island.rows.begin(), island.rows.end());
+      // every row of the island touches only the island's bodies
+      for (const int row : island.rows) {
+        for (const int b : report.velocity.mlcp.bodies_of(row)) {
+          if (b >= 0) CHECK(std::binary_search(island.bodies.begin(), island.bodies.end(), b));
+        }
+      }
+    }
+    // the islands partition the rows
+    std::sort(all.begin(), all.end());
+    CHECK(all.size() == static_cast<std::size_t>(report.velocity.mlcp.row_count()));
+    CHECK(std::adjacent_find(all.begin(), all.end()) == all.end());
+    // A chain's joints make one island of its links, its rows counted as joints' rows.
+    World chain = scene_world("chain", "pgs");
+    const WorldReport chained = step_reported(chain);
+    const std::vector<Island> one = find_islands(chained.velocity.mlcp, 0);
+    REQUIRE(one.size() == 1);
+    CHECK(one[0].joint_rows == chained.velocity.mlcp.row_count());
+  }
+
+  TEST_CASE("exact: each step's λ solves the step's MLCP, and equals pivoting on it") {
+    // heavy-on-light:1000 and a 5-box stack: small islands, solved by Lemke with friction. The
+    // λ the step keeps must be what solve_mlcp_exactly gives for the MLCP the step assembled
+    // (bit for bit: the same arithmetic on the same island) and must solve it: residual of
+    // eq. 3-24 within 1e-9 of m g / Δt's scale.
+    for (const char* name : {"heavy-on-light:1000", "vertical-stack:5"}) {
+      CAPTURE(name);
+      World world = scene_world(name, "exact");
+      for (int k = 0; k < 120; ++k) {
+        const WorldReport report = step_reported(world);
+        if (k % 30 != 29) continue;
+        const Mlcp& mlcp = report.velocity.mlcp;
+        const ExactSolution exact = solve_mlcp_exactly(mlcp);
+        REQUIRE(exact.status == LemkeStatus::solved);
+        const Eigen::VectorXd& lambda = report.velocity.solution.lambda;
+        CHECK((lambda - exact.lambda).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + exact.lambda.cwiseAbs().maxCoeff()));
+        const double scale = 1.0 + mlcp.slack(Eigen::VectorXd::Zero(mlcp.row_count()).eval().data()).norm();
+        CHECK(mlcp.residual(lambda.data()) <= 1e-9 * scale);
+      }
+    }
+  }
+
+  TEST_CASE("block: one sweep solves a resting box's two contact rows as their 2 × 2 LCP does") {
+    // A unit box placed resting on the ground. Steps 0 and 1 carry its weight on the point
+    // under its centre (Fig 4-2, then cached); step 2 has both corners, the point under the
+    // centre dropped, neither with a λ to warm start from: the manifold's two contact rows from
+    // λ = 0 and one friction row (λ_f ≈ 0: nothing pushes sideways). One block sweep must give
+    // the two rows the exact answer (Lemke on the same MLCP: m g / 2 each) to 1e-9 of it; one
+    // PGS sweep does not: the first row, swept alone, takes η / d₁ with d₁ = 1/m + r²/I = 2.5
+    // (r = 0.5 m, I = 1/6 kg·m²), 3.92 N of the 4.9 N, and the rows end m g / 10 off.
+    for (const char* method : {"block", "pgs"}) {
+      CAPTURE(method);
+      Scene scene = builtin_scene("box-on-ground-resting");
+      scene.solver = method;
+      scene.step.iterations = 1;
+      World world = build_world(scene, world_settings(scene));
+      world.step();
+      world.step();
+      const WorldReport report = step_reported(world);
+      const ExactSolution exact = solve_mlcp_exactly(report.velocity.mlcp);
+      REQUIRE(exact.status == LemkeStatus::solved);
+      const Eigen::VectorXd& lambda = report.velocity.solution.lambda;
+      REQUIRE(lambda.size() == 3);
+      REQUIRE(report.velocity.lambda_exp.head<2>().isZero());
+      REQUIRE(exact.lambda[0] > 0.0);
+      REQUIRE(exact.lambda[1] > 0.0);
+      const double error = std::max(std::abs(lambda[0] - exact.lambda[0]), std::abs(lambda[1] - exact.lambda[1]));
+      if (std::string(method) == "block") {
+        CHECK(error <= 1e-9 * exact.lambda.cwiseAbs().maxCoeff());
+      } else {
+        CHECK(error == doctest::Approx(0.1 * 9.8).epsilon(1e-6));
+      }
+    }
+  }
+
+  TEST_CASE("islands holds every scene of the table (the issue's bars, 60 Hz, 10 s)") {
+    const LabRun light100 = run_lab("heavy-on-light:100", "islands", ten_seconds);
+    MESSAGE("heavy-on-light:100: overlap " << light100.deepest * 1e3 << " mm, sideways " << light100.sideways * 1e3 << " mm");
+    CHECK(!light100.diverged);
+    CHECK(light100.deepest <= 0.010);
+    CHECK(light100.sideways <= 0.005);
+
+    const LabRun light1000 = run_lab("heavy-on-light:1000", "islands", ten_seconds);
+    MESSAGE("heavy-on-light:1000: overlap " << light1000.deepest * 1e3 << " mm");
+    CHECK(!light1000.diverged);
+    CHECK(light1000.deepest <= 0.020);
+
+    const LabRun stack = run_lab("vertical-stack:20", "islands", ten_seconds);
+    MESSAGE("vertical-stack:20: top sway " << stack.top_sway * 1e3 << " mm, top height change " << stack.top_rise * 1e3 << " mm");
+    CHECK(!stack.diverged);
+    CHECK(stack.top_sway <= 0.010);
+    CHECK(std::abs(stack.top_rise) <= 0.020);
+
+    const LabRun chain = run_lab("ball-and-chain:100", "islands", ten_seconds);
+    MESSAGE("ball-and-chain:100: largest stretch " << chain.stretch * 100 << " %");
+    CHECK(!chain.diverged);
+    CHECK(chain.stretch <= 0.01);
+
+    const LabRun pyramid = run_lab("pyramid:20", "islands", ten_seconds);
+    MESSAGE("pyramid:20: apex moved " << pyramid.top_sway << " m sideways, " << pyramid.top_rise << " m up; any box " << pyramid.sideways << " m sideways");
+    CHECK(!pyramid.diverged);
+    CHECK(pyramid.samples.back().top <= 0.2);
+    CHECK(pyramid.sideways <= 0.1);
+  }
+
+  TEST_CASE("every method steps deterministically: the same scene twice, the same bytes") {
+    for (const SolverInfo& method : method_list()) {
+      CAPTURE(method.name);
+      const LabRun a = run_lab("ball-and-chain:10", method.name, 120);
+      const LabRun b = run_lab("ball-and-chain:10", method.name, 120);
+      REQUIRE(a.samples.size() == b.samples.size());
+      for (std::size_t k = 0; k < a.samples.size(); ++k) {
+        CHECK(a.samples[k].energy == b.samples[k].energy);  // every bit
+      }
+    }
+  }
+
+  TEST_CASE("the methods by name: five, the default islands, any other name refused naming them") {
+    std::vector<std::string> names;
+    for (const SolverInfo& s : method_list()) names.push_back(s.name);
+    CHECK(names == std::vector<std::string>{"text", "pgs", "block", "exact", "islands"});
+    CHECK(Scene().solver == std::string(default_method));
+    CHECK(with_method(WorldSettings(), "islands").solver == "islands");
+    CHECK(static_cast<bool>(with_method(WorldSettings(), "exact").method));
+    CHECK(!with_method(with_method(WorldSettings(), "exact"), "pgs").method);
+    CHECK_THROWS_WITH_AS(with_method(WorldSettings(), "soft"),
+                         "solver: no solver is named \"soft\" (there are: text, pgs, block, exact, islands)",
+                         std::invalid_argument);
+  }
+}
