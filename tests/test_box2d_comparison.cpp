@@ -20,7 +20,7 @@
 #include "beyond/methods.h"
 #include "contact/world.h"
 #include "markdown.h"
-#include "reference/box2d_scene.h"
+#include "app/reference/box2d_scene.h"
 
 using namespace lamina;
 

@@ -79,18 +79,13 @@ class BlockMethod final : public StepMethod {
   void take_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
                  std::vector<double>& lambda, WorldReport* report) override {
     const Mlcp& mlcp = problem.velocity;
-    mlcp.visit([&](const auto& rows) {
-      constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
-      std::vector<Block<N>> a;
-      // λ = λ_exp: a = B λ (the text's TransposeMultiply)
-      transpose_multiply(rows, mlcp.body_count(), lambda.data(), a);
-      for (int sweep = 0; sweep < problem.settings.step.iterations; ++sweep) {
-        block_sweep(rows, a, lambda.data());
-        if (report != nullptr) {
-          report->velocity.solution.residuals.push_back(mlcp.residual(lambda.data()));
-        }
-      }
-    });
+    std::function<void(int, const double*)> record;
+    if (report != nullptr) {
+      record = [&](int, const double* l) {
+        report->velocity.solution.residuals.push_back(mlcp.residual(l));
+      };
+    }
+    block_sweeps(mlcp, lambda.data(), problem.settings.step.iterations, record);
     finish_step(problem, bodies, lambda, {}, split_, pgs_, report);
   }
 
@@ -100,6 +95,20 @@ class BlockMethod final : public StepMethod {
 };
 
 }  // namespace
+
+void block_sweeps(const Mlcp& mlcp, double* lambda, int sweeps,
+                  const std::function<void(int, const double*)>& after_sweep) {
+  mlcp.visit([&](const auto& rows) {
+    constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
+    std::vector<Block<N>> a;
+    // λ = λ_exp: a = B λ (the text's TransposeMultiply)
+    transpose_multiply(rows, mlcp.body_count(), lambda, a);
+    for (int sweep = 1; sweep <= sweeps; ++sweep) {
+      block_sweep(rows, a, lambda);
+      if (after_sweep) after_sweep(sweep, lambda);
+    }
+  });
+}
 
 std::unique_ptr<StepMethod> make_block_method() { return std::make_unique<BlockMethod>(); }
 

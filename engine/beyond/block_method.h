@@ -17,11 +17,18 @@
 // restitution, the cache.
 #pragma once
 
+#include <functional>
 #include <memory>
 
+#include "constraints/mlcp.h"
 #include "contact/step_method.h"
 
 namespace lamina {
+
+// `sweeps` block sweeps on λ in place (λ_exp on entry), calling after_sweep(k, λ) after sweep k
+// (k from 1) when given: the method's solve, and chapter 6's λ-per-sweep plots.
+void block_sweeps(const Mlcp& mlcp, double* lambda, int sweeps,
+                  const std::function<void(int, const double*)>& after_sweep = {});
 
 std::unique_ptr<StepMethod> make_block_method();
 

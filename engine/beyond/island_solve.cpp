@@ -8,26 +8,33 @@ namespace lamina {
 
 IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlcp& scratch,
                          PgsSolver& pgs, std::vector<double>& lambda) {
-  scratch.assemble_subset(mlcp, island.rows);
-  std::vector<double> local(island.rows.size());
-  for (std::size_t i = 0; i < local.size(); ++i) local[i] = lambda[static_cast<std::size_t>(island.rows[i])];
+  // An island of every row is the MLCP itself: solved in place, nothing copied (a pyramid)
+  const bool whole = static_cast<int>(island.rows.size()) == mlcp.row_count();
+  if (!whole) scratch.assemble_subset(mlcp, island.rows);
+  const Mlcp& own = whole ? mlcp : scratch;
+  std::vector<double> local;
+  if (!whole) {
+    local.resize(island.rows.size());
+    for (std::size_t i = 0; i < local.size(); ++i) local[i] = lambda[static_cast<std::size_t>(island.rows[i])];
+  }
+  double* own_lambda = whole ? lambda.data() : local.data();
   IslandSolve how = IslandSolve::pgs;
   // A state gone non-finite is left to PGS, which carries it into the bodies, where the run
   // that diverged is stopped and says so (first_non_finite_body); pivoting would refuse it.
   bool finite = true;
-  for (int i = 0; i < scratch.row_count() && finite; ++i) {
-    finite = std::isfinite(scratch.eta(i)) && std::isfinite(scratch.d(i));
+  for (int i = 0; i < own.row_count() && finite; ++i) {
+    finite = std::isfinite(own.eta(i)) && std::isfinite(own.d(i));
   }
   if (finite && island.lcp_size <= exact_island_limit) {
-    const ExactSolution exact = solve_mlcp_exactly(scratch);
+    const ExactSolution exact = solve_mlcp_exactly(own);
     if (exact.status == LemkeStatus::solved) {
-      for (std::size_t i = 0; i < local.size(); ++i) local[i] = exact.lambda[static_cast<Eigen::Index>(i)];
+      for (int i = 0; i < own.row_count(); ++i) own_lambda[i] = exact.lambda[i];
       how = IslandSolve::exact;
     }
   }
   if (how == IslandSolve::pgs) {
     SweepResult sweeps_run;
-    pgs.solve(scratch, local.data(), {sweeps, 0.0, false}, sweeps_run);
+    pgs.solve(own, own_lambda, {sweeps, 0.0, false}, sweeps_run);
   }
   for (std::size_t i = 0; i < local.size(); ++i) lambda[static_cast<std::size_t>(island.rows[i])] = local[i];
   return how;

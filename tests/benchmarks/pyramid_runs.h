@@ -35,7 +35,7 @@ struct PyramidRun {
   double us_per_row_sweep() const;
 };
 
-// Lamina (World) with the given PGS sweeps per step; position sweeps stay 3.
+// Lamina (World, the method `pgs`) with the given PGS sweeps per step; position sweeps stay 3.
 PyramidRun run_lamina_pyramid(int base, int iterations);
 // Box2D 2.4.1 at 8 velocity / 3 position iterations.
 PyramidRun run_box2d_pyramid(int base);

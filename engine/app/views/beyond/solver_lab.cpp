@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 
 #include "contact/world.h"
 #include "scene/builtin_scenes.h"
@@ -9,43 +10,74 @@
 
 namespace lamina {
 
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+LabMeter::LabMeter(const Scene& scene, const std::string& method, const std::vector<Pose>& start)
+    : start_(start) {
+  run_.scene = scene.name;
+  run_.method = method;
+  run_.poses.push_back(start);
+  for (const BodyDescription& b : scene.bodies) moving_.push_back(!b.is_static);
+  if (!scene.joints.empty()) {
+    pin_ = scene.joints[0].anchor;
+    rest_ = (start_.back().head<2>() - pin_).norm();
+  }
+}
+
+void LabMeter::sample(double time, const std::vector<Pose>& poses, double overlap, double energy) {
+  run_.poses.push_back(poses);
+  std::vector<Vec2> centres, start;
+  for (const Pose& p : poses) centres.push_back(p.head<2>());
+  for (const Pose& p : start_) start.push_back(p.head<2>());
+  LabSample s;
+  s.time = time;
+  s.overlap = overlap;
+  for (std::size_t b = 0; b < centres.size(); ++b) {
+    if (moving_[b]) s.sideways = std::max(s.sideways, std::abs(centres[b].x() - start[b].x()));
+  }
+  s.top = (centres.back() - start.back()).norm();
+  if (rest_ > 0.0) s.stretch = (centres.back() - pin_).norm() / rest_ - 1.0;
+  s.energy = energy;
+  run_.deepest = std::max(run_.deepest, s.overlap);
+  run_.sideways = std::max(run_.sideways, s.sideways);
+  run_.top_sway = std::max(run_.top_sway, std::abs(centres.back().x() - start.back().x()));
+  run_.top_rise = centres.back().y() - start.back().y();
+  run_.stretch = std::max(run_.stretch, s.stretch);
+  run_.samples.push_back(s);
+}
+
+namespace {
+
+std::vector<Pose> poses_of(const World& world) {
+  std::vector<Pose> poses;
+  for (const RigidBody& b : world.bodies()) poses.emplace_back(b.x.x(), b.x.y(), planar_angle(b.q));
+  return poses;
+}
+
+}  // namespace
+
 LabRun run_lab(const std::string& scene_name, const std::string& method, int steps) {
   Scene scene = builtin_scene(scene_name);
   scene.solver = method;
   World world = build_world(scene, world_settings(scene));
-  LabRun run;
-  run.scene = scene_name;
-  run.method = method;
-  const std::vector<RigidBody> start = world.bodies();
-  const Vec3& top0 = start.back().x;
-  const bool jointed = !scene.joints.empty();
-  const Vec3 pin = jointed ? Vec3(scene.joints[0].anchor.x(), scene.joints[0].anchor.y(), 0.0)
-                           : Vec3::Zero();
-  const double rest = (top0 - pin).norm();
+  LabMeter meter(scene, method, poses_of(world));
+  const double start = thread_cpu_seconds();
   for (int k = 0; k < steps; ++k) {
     world.step();
     if (first_non_finite_body(world)) {
-      run.diverged = true;
+      meter.diverged();
       break;
     }
-    LabSample s;
-    s.time = world.time();
-    for (const ContactInfo& c : world.contacts()) s.overlap = std::max(s.overlap, -c.separation);
-    const std::vector<RigidBody>& bodies = world.bodies();
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      if (!bodies[b].is_static()) s.sideways = std::max(s.sideways, std::abs(bodies[b].x.x() - start[b].x.x()));
-    }
-    run.sideways = std::max(run.sideways, s.sideways);
-    s.top = (bodies.back().x - top0).norm();
-    if (jointed) s.stretch = (bodies.back().x - pin).norm() / rest - 1.0;
-    s.energy = mechanical_energy(world);
-    run.deepest = std::max(run.deepest, s.overlap);
-    run.top_sway = std::max(run.top_sway, std::abs(bodies.back().x.x() - top0.x()));
-    run.top_rise = bodies.back().x.y() - top0.y();
-    run.stretch = std::max(run.stretch, s.stretch);
-    run.samples.push_back(s);
+    double overlap = 0.0;
+    for (const ContactInfo& c : world.contacts()) overlap = std::max(overlap, -c.separation);
+    meter.sample(world.time(), poses_of(world), overlap, mechanical_energy(world));
   }
-  return run;
+  meter.cost(thread_cpu_seconds() - start);
+  return meter.run();
 }
 
 }  // namespace lamina

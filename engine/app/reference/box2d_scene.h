@@ -1,6 +1,7 @@
 // Box2D 2.4.1, the behavioural reference, built from the same Scene as Lamina.
 //
-// Used only by tests and benchmarks: the engine never links Box2D.
+// Used by the tests, the benchmarks and chapter 6's table (06_beyond_the_text): no stage of the
+// engine links Box2D, only this room of the application does.
 #pragma once
 
 #include <memory>

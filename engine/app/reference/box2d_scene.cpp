@@ -1,4 +1,4 @@
-#include "reference/box2d_scene.h"
+#include "app/reference/box2d_scene.h"
 
 #include <map>
 #include <string>
