@@ -222,6 +222,16 @@ TEST_SUITE("PgsSolver") {
     // the text's version would give body 1 λ[1] Bsp[0][0] = 5 Bsp[0][0]: visibly different
     const Vec6 text_a1 = lambda[1] * mlcp.b_block(0, 0);
     CHECK((a[1] - text_a1).norm() > 0.1 * expected.norm());
+    // The pitfall lambda-b1 puts the text's slip back: row 0 (bodies 1, 0) adds λ[1] Bsp[0][0] to
+    // body 1 and λ[0] Bsp[0][1] to body 0; row 1 (body 0) adds λ[0] Bsp[1][0] to body 0.
+    Pitfalls slip;
+    slip.add(Pitfall::lambda_b1);
+    PgsSolver text_solver;
+    Eigen::VectorXd text_solved = lambda;
+    text_solver.solve(mlcp, text_solved.data(), {0, 0.0, false}, result, slip);
+    const Vec6 text_a0 = lambda[0] * (mlcp.b_block(0, 1) + mlcp.b_block(1, 0));
+    CHECK((text_solver.velocity_change(1) - text_a1).norm() <= 1e-12 * text_a1.norm());
+    CHECK((text_solver.velocity_change(0) - text_a0).norm() <= 1e-12 * text_a0.norm());
   }
 
   TEST_CASE("warm starting from last step's λ needs fewer sweeps on a swinging chain") {

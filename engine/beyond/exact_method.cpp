@@ -12,7 +12,7 @@ class ExactMethod final : public StepMethod {
                  std::vector<double>& lambda, WorldReport* report) override {
     for (const Island& island : find_islands(problem.velocity, problem.first_joint_row)) {
       solve_island(problem.velocity, island, problem.settings.step.iterations, scratch_, pgs_,
-                   lambda);
+                   lambda, problem.settings.step.pitfalls);
     }
     if (report != nullptr) {
       report->velocity.solution.residuals = {problem.velocity.residual(lambda.data())};

@@ -9,11 +9,11 @@ namespace {
 
 // Moves a body by its push-out [v; ω] over Δt, as chapter 2's step moves it by a velocity
 // (eq. 2-5, 2-6), leaving its velocity as it was.
-void push_out_body(RigidBody& body, const Vec6& push, double dt) {
+void push_out_body(RigidBody& body, const Vec6& push, double dt, Pitfalls pitfalls) {
   const Vec3 v = body.v, omega = body.angular_velocity;
   body.v = push.head<3>();
   body.angular_velocity = push.tail<3>();
-  integrate(body, dt);
+  integrate(body, dt, Integration::semi_implicit, pitfalls);
   body.v = v;
   body.angular_velocity = omega;
 }
@@ -30,7 +30,7 @@ class IslandMethod final : public StepMethod {
         for (const int b : island.bodies) skip_[static_cast<std::size_t>(b)] = 1;
       } else {
         solve_island(problem.velocity, island, problem.settings.step.iterations, scratch_, pgs_,
-                     lambda);
+                     lambda, problem.settings.step.pitfalls);
       }
     }
     if (report != nullptr) {
@@ -40,7 +40,7 @@ class IslandMethod final : public StepMethod {
     const std::vector<Vec6>& push = split_.push_out();
     if (push.empty()) return;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-      if (skip_[b]) push_out_body(bodies[b], push[b], problem.settings.step.dt);
+      if (skip_[b]) push_out_body(bodies[b], push[b], problem.settings.step.dt, problem.settings.step.pitfalls);
     }
   }
 
@@ -93,12 +93,13 @@ class IslandMethod final : public StepMethod {
       // eq. 3-16 for the substep, solved exactly (PGS if Lemke gives up)
       unconstrained_velocities(bodies, h, unconstrained_);
       substep_mlcp_.assemble(bodies, rows_, unconstrained_, h);
-      solve_island(substep_mlcp_, all, problem.settings.step.iterations, scratch_, pgs_, local);
+      solve_island(substep_mlcp_, all, problem.settings.step.iterations, scratch_, pgs_, local,
+                   problem.settings.step.pitfalls);
       // eq. 3-11: F_c = Jᵀ λ, then chapter 2's step over h
       substep_mlcp_.add_constraint_forces(bodies, local.data());
       for (const int b : island.bodies) {
         RigidBody& body = bodies[static_cast<std::size_t>(b)];
-        integrate(body, h);
+        integrate(body, h, Integration::semi_implicit, problem.settings.step.pitfalls);
         body.clear_forces();
       }
       for (std::size_t i = 0; i < local.size(); ++i) mean[i] += local[i] / joint_substeps;

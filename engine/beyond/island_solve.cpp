@@ -7,7 +7,7 @@
 namespace lamina {
 
 IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlcp& scratch,
-                         PgsSolver& pgs, std::vector<double>& lambda) {
+                         PgsSolver& pgs, std::vector<double>& lambda, Pitfalls pitfalls) {
   // An island of every row is the MLCP itself: solved in place, nothing copied (a pyramid)
   const bool whole = static_cast<int>(island.rows.size()) == mlcp.row_count();
   if (!whole) scratch.assemble_subset(mlcp, island.rows);
@@ -25,7 +25,7 @@ IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlc
   for (int i = 0; i < own.row_count() && finite; ++i) {
     finite = std::isfinite(own.eta(i)) && std::isfinite(own.d(i));
   }
-  if (finite && island.lcp_size <= exact_island_limit) {
+  if (finite && island.lcp_size <= exact_island_limit && has_exact_form(own)) {
     const ExactSolution exact = solve_mlcp_exactly(own);
     if (exact.status == LemkeStatus::solved) {
       for (int i = 0; i < own.row_count(); ++i) own_lambda[i] = exact.lambda[i];
@@ -34,7 +34,7 @@ IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlc
   }
   if (how == IslandSolve::pgs) {
     SweepResult sweeps_run;
-    pgs.solve(own, own_lambda, {sweeps, 0.0, false}, sweeps_run);
+    pgs.solve(own, own_lambda, {sweeps, 0.0, false}, sweeps_run, pitfalls);
   }
   for (std::size_t i = 0; i < local.size(); ++i) lambda[static_cast<std::size_t>(island.rows[i])] = local[i];
   return how;
@@ -55,7 +55,8 @@ void finish_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
       continue;
     }
     // eq. 2-1..2-8 under F_ext + F_c, with the push-out
-    integrate_with_push_out(bodies[b], push.empty() ? Vec6::Zero() : push[b], s.step.dt);
+    integrate_with_push_out(bodies[b], push.empty() ? Vec6::Zero() : push[b], s.step.dt,
+                            s.step.pitfalls);
   }
 }
 

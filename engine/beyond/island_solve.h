@@ -23,10 +23,11 @@ enum class IslandSolve { exact, pgs };
 
 // Solves the island's rows of `mlcp` (its MLCP, eq. 3-24, on its own: islands.h) into their λ:
 // exactly (exact_mlcp.h) when the island has at most exact_island_limit variables and the solve
-// ends in a solution, else by `sweeps` PGS sweeps from the λ there. `scratch` and `pgs` are
-// working memory.
+// ends in a solution, else by `sweeps` PGS sweeps from the λ there (with the PGS pitfalls).
+// Rows the exact form cannot take (a friction row with fixed bounds: crude-friction) go to PGS
+// too. `scratch` and `pgs` are working memory.
 IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlcp& scratch,
-                         PgsSolver& pgs, std::vector<double>& lambda);
+                         PgsSolver& pgs, std::vector<double>& lambda, Pitfalls pitfalls = {});
 
 // Steps 6 and 7 after the velocity solve: the split-impulse push-out (when the settings ask for
 // it, recorded in the report), F_c = Jᵀ λ and chapter 2's step for every body whose `skip` entry

@@ -14,9 +14,10 @@ bool same_structure(const std::vector<std::array<int, 2>>& Jmap, const Constrain
   return true;
 }
 
-void integrate_all(std::vector<RigidBody>& bodies, double dt, Integration scheme) {
+void integrate_all(std::vector<RigidBody>& bodies, double dt, Integration scheme,
+                   Pitfalls pitfalls) {
   for (RigidBody& body : bodies) {
-    integrate(body, dt, scheme);
+    integrate(body, dt, scheme, pitfalls);
     body.clear_forces();
   }
 }
@@ -48,7 +49,7 @@ void constrained_step(std::vector<RigidBody>& bodies, const ConstraintList& cons
   const std::vector<ConstraintRow> rows = write_all_rows(bodies, constraints, dt, settings.step.beta);
   Mlcp mlcp = assemble_mlcp(bodies, rows, dt);
   std::vector<double> lambda;
-  if (settings.warm_start) {
+  if (settings.warm_start && !settings.step.pitfalls.has(Pitfall::no_warm_start)) {
     warm_start.append_guess(rows.data(), rows.data() + rows.size(), lambda);
   } else {
     lambda.assign(rows.size(), 0.0);
@@ -58,10 +59,10 @@ void constrained_step(std::vector<RigidBody>& bodies, const ConstraintList& cons
   if (report != nullptr) {
     report->lambda_exp = Eigen::Map<const Eigen::VectorXd>(lambda.data(), mlcp.row_count());
   }
-  PgsSolver().solve(mlcp, lambda.data(), sweeps, solution);
+  PgsSolver().solve(mlcp, lambda.data(), sweeps, solution, settings.step.pitfalls);
   // eq. 3-11: F_c = Jᵀ λ joins F_ext on every body
   mlcp.add_constraint_forces(bodies, lambda.data());
-  integrate_all(bodies, dt, settings.scheme);
+  integrate_all(bodies, dt, settings.scheme, settings.step.pitfalls);
   warm_start.remember(rows.data(), rows.data() + rows.size(), lambda.data());
   if (report == nullptr) return;
   solution.lambda = Eigen::Map<const Eigen::VectorXd>(lambda.data(), mlcp.row_count());

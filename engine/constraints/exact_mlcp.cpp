@@ -52,6 +52,18 @@ Eigen::MatrixXd delassus(const Mlcp& mlcp) {
 
 }  // namespace
 
+bool has_exact_form(const Mlcp& mlcp) {
+  for (int i = 0; i < mlcp.row_count(); ++i) {
+    if (mlcp.friction_of(i) >= 0) continue;
+    const double none = 0.0;
+    const std::array<double, 2> b = mlcp.bounds(i, &none);
+    const bool one_sided = b[0] == 0.0 && std::isinf(b[1]) && b[1] > 0.0;
+    const bool equality = std::isinf(b[0]) && b[0] < 0.0 && std::isinf(b[1]) && b[1] > 0.0;
+    if (!one_sided && !equality) return false;
+  }
+  return true;
+}
+
 ExactSolution solve_mlcp_exactly(const Mlcp& mlcp) {
   const int n = mlcp.row_count();
   const Eigen::MatrixXd JB = delassus(mlcp);

@@ -28,6 +28,9 @@ struct ExactSolution {
   int pivots = 0;          // Lemke's pivots
 };
 
+// Whether every row has a form above: bounds [0, ∞), (−∞, ∞) or a friction row's ±μ Σ λc.
+bool has_exact_form(const Mlcp& mlcp);
+
 // Throws std::invalid_argument for a row whose fixed bounds are not [0, ∞) or (−∞, ∞).
 ExactSolution solve_mlcp_exactly(const Mlcp& mlcp);
 

@@ -1,6 +1,7 @@
 // Projected Gauss-Seidel for the MLCP of eq. 3-24 (chapter 3, "Projected Gauss-Seidel Method").
 //
 //   start    a = B λ_exp                        (the text's TransposeMultiply)
+// (The pitfalls lambda-b1 and clamp-increment put back two classic slips when asked.)
 //   sweep    for each row i:
 //              Δ = (η_i − J_i · a) / d_i        (Gauss-Seidel's (b_i − Σ_j A_ij λ_j) / A_ii)
 //              λ_i ← clamp(λ_i + Δ, λ⁻_i, λ⁺_i)  (friction rows: ±μ λc of their contact row's
@@ -16,13 +17,16 @@
 
 #include "constraints/mlcp.h"
 #include "constraints/sweep_settings.h"
+#include "motion/pitfalls.h"
 
 namespace lamina {
 
 // Row i of a sweep (eq. 3-24), on the a_b = (B λ)_b of its two bodies (a2 unused for a one-body
 // row): Δ = (η_i − J_i · a) / d_i, λ_i ← clamp(λ_i + Δ, λ⁻_i, λ⁺_i), a ← a + (λ_i new − old) B_i.
 // The one row update of every sweep (PgsSolver's, chapter 6's block sweep).
-template <int N>
+// With ClampIncrement (the pitfall clamp-increment) the increment Δ is clamped to [λ⁻, λ⁺]
+// instead of λ_i + Δ, so λ_i itself may leave its bounds.
+template <int N, bool ClampIncrement = false>
 void pgs_row(const PackedRow<N>& row, std::size_t i, double* lambda, Block<N>& a1, Block<N>& a2) {
   const bool two_bodies = row.two_bodies();
   // Δ = (η_i − J_i · a) / d_i; 1/d_i is computed once per row when the row is assembled, so the
@@ -30,7 +34,11 @@ void pgs_row(const PackedRow<N>& row, std::size_t i, double* lambda, Block<N>& a
   const double delta = (row.eta - row_dot<N>(row.J, a1, a2, two_bodies)) * row.inverse_d;
   const double old = lambda[i];
   const auto [lo, hi] = bounds_of(row, lambda);
-  lambda[i] = std::max(lo, std::min(old + delta, hi));
+  if constexpr (ClampIncrement) {
+    lambda[i] = old + std::max(lo, std::min(delta, hi));
+  } else {
+    lambda[i] = std::max(lo, std::min(old + delta, hi));
+  }
   const double diff = lambda[i] - old;
   a1 += diff * row.B[0];
   if (two_bodies) a2 += diff * row.B[1];
@@ -45,7 +53,9 @@ class PgsSolver {
   // asked and stops once it is ≤ a tolerance > 0. Recording alone never changes the sweeps run,
   // so λ is the same bit for bit with or without it. result.iterations and result.residuals are
   // filled; result.lambda is left alone.
-  void solve(const Mlcp& mlcp, double* lambda, const SweepSettings& settings, SweepResult& result);
+  // Of the pitfalls (motion/pitfalls.h), lambda-b1 and clamp-increment are read here.
+  void solve(const Mlcp& mlcp, double* lambda, const SweepSettings& settings, SweepResult& result,
+             Pitfalls pitfalls = {});
 
   // (B λ)_b after the last sweep of the last solve: body b's velocity change per Δt from the
   // rows, [v; ω].

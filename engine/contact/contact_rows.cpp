@@ -71,6 +71,24 @@ int append_friction_row(std::vector<ConstraintRow>& rows, const ContactPair& pai
   return index;
 }
 
+// The pitfall crude-friction: the pair's friction rows from `first` on bounded by ±μ m g per
+// point they hold, m the mass of the moving body the contact holds up (the second, or the first
+// when the second is static), whatever the normal force λc is: the text's cruder bound.
+void crude_friction_bounds(std::vector<ConstraintRow>& rows, int first, const ContactPair& pair,
+                           const std::vector<RigidBody>& bodies, const StepSettings& step) {
+  const RigidBody& second = bodies[static_cast<std::size_t>(pair.bodies.second)];
+  const RigidBody& held = second.is_static() ? bodies[static_cast<std::size_t>(pair.bodies.first)] : second;
+  const double per_point = pair.friction * held.mass * step.gravity.norm();
+  for (std::size_t i = static_cast<std::size_t>(first); i < rows.size(); ++i) {
+    ConstraintRow& row = rows[i];
+    const double bound = per_point * row.friction_count;
+    row.friction_of = -1;
+    row.friction_count = 1;
+    row.lambda_min = -bound;
+    row.lambda_max = bound;
+  }
+}
+
 // The direction of friction row t: u1 = z × n in the plane, u2 = z.
 Vec3 tangent(int t, const Vec2& normal) { return t == 0 ? lift(tangent_of(normal)) : Vec3::UnitZ(); }
 
@@ -100,6 +118,7 @@ void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBo
     }
     for (int k = 0; k < pair.count; ++k) pair.contacts[k].friction_rows = {-1, -1};
     const int tangents = friction_rows_per_contact(pair, settings);
+    const int first_friction_row = static_cast<int>(rows.size());
     const bool one_row = settings.friction == FrictionRows::per_manifold && pair.count == 2;
     for (int t = 0; t < tangents; ++t) {
       if (one_row) {
@@ -122,6 +141,9 @@ void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBo
             append_friction_row(rows, pair, ends[k], tangent(t, contact.normal), contact.row, 1);
         lambda.push_back(t == 0 ? contact.lambda_tangent : 0.0);
       }
+    }
+    if (step.pitfalls.has(Pitfall::crude_friction)) {
+      crude_friction_bounds(rows, first_friction_row, pair, bodies, step);
     }
     pair.rows.count = static_cast<int>(rows.size()) - pair.rows.first;
   }

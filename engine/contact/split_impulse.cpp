@@ -23,10 +23,10 @@ bool nothing_to_push(const std::vector<double>& zeta) {
 }  // namespace
 
 void solve_recording(PgsSolver& pgs, const Mlcp& mlcp, int iterations, std::vector<double>& lambda,
-                     StepReport* into) {
+                     StepReport* into, Pitfalls pitfalls) {
   if (into != nullptr) into->lambda_exp = copy_of(lambda);
   SweepResult sweeps;  // the sweeps run and their residuals; λ itself stays in `lambda`
-  pgs.solve(mlcp, lambda.data(), {iterations, 0.0, into != nullptr}, sweeps);
+  pgs.solve(mlcp, lambda.data(), {iterations, 0.0, into != nullptr}, sweeps, pitfalls);
   if (into == nullptr) return;
   into->mlcp = mlcp;
   sweeps.lambda = copy_of(lambda);
@@ -45,7 +45,7 @@ void SplitImpulse::solve(const Mlcp& velocity, const std::vector<ContactPair>& p
   // eq. 3-16 for the push-out alone: the bodies start from rest under no force, so η = ζ/Δt
   position_.assemble_rows_of(velocity, rows_, zeta_, dt);
   lambda_.assign(rows_.size(), 0.0);
-  solve_recording(pgs, position_, iterations, lambda_, report);
+  solve_recording(pgs, position_, iterations, lambda_, report, step.pitfalls);
   // The push-out velocity of each body: M⁻¹ Jᵀ λ Δt = B λ Δt
   push_out_.resize(static_cast<std::size_t>(velocity.body_count()));
   for (std::size_t b = 0; b < push_out_.size(); ++b) {
@@ -53,7 +53,7 @@ void SplitImpulse::solve(const Mlcp& velocity, const std::vector<ContactPair>& p
   }
 }
 
-void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt) {
+void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt, Pitfalls pitfalls) {
   if (body.is_static()) {
     body.clear_forces();
     return;
@@ -62,16 +62,16 @@ void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt) {
   body.v += push.head<3>();
   body.angular_velocity += push.tail<3>();
   // eq. 2-1..2-8 under F_ext + F_c
-  integrate(body, dt);
+  integrate(body, dt, Integration::semi_implicit, pitfalls);
   body.v -= push.head<3>();
   body.angular_velocity -= push.tail<3>();
   body.clear_forces();
 }
 
 void integrate_with_push_out(std::vector<RigidBody>& bodies, const std::vector<Vec6>& push_out,
-                             double dt) {
+                             double dt, Pitfalls pitfalls) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    integrate_with_push_out(bodies[i], push_out.empty() ? Vec6::Zero() : push_out[i], dt);
+    integrate_with_push_out(bodies[i], push_out.empty() ? Vec6::Zero() : push_out[i], dt, pitfalls);
   }
 }
 

@@ -43,15 +43,15 @@ class SplitImpulse {
 
 // Chapter 2's step (eq. 2-1..2-8) for every dynamic body under its accumulated forces, with the
 // push-out velocity (empty: none) lent for the position update and then taken back; every
-// body's forces are cleared.
+// body's forces are cleared. The pitfalls go to chapter 2's step.
 void integrate_with_push_out(std::vector<RigidBody>& bodies, const std::vector<Vec6>& push_out,
-                             double dt);
+                             double dt, Pitfalls pitfalls = {});
 // The same for one body with its push-out `push` ([v; ω], zero for none).
-void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt);
+void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt, Pitfalls pitfalls = {});
 
 // PGS on λ in place, λ_exp on entry; with a report (`into`), also records the MLCP as solved,
 // λ_exp, the residual after every sweep and λ.
 void solve_recording(PgsSolver& pgs, const Mlcp& mlcp, int iterations, std::vector<double>& lambda,
-                     StepReport* into);
+                     StepReport* into, Pitfalls pitfalls = {});
 
 }  // namespace lamina

@@ -34,6 +34,11 @@ void validate(const WorldSettings& s) {
 
 World::World(const WorldSettings& settings) : settings_(settings) {
   validate(settings_);
+  // The pitfall baumgarte-no-slop: Baumgarte's bias with no slop, whatever the method asked
+  if (settings_.step.pitfalls.has(Pitfall::baumgarte_no_slop)) {
+    settings_.contact.correction = PositionCorrection::baumgarte;
+    settings_.contact.slop = 0.0;
+  }
   if (settings_.method) method_ = settings_.method();
 }
 
@@ -120,7 +125,8 @@ void World::advance(WorldReport* report) {
     // 6. eq. 3-11, 5-9: F_c = Jᵀ λ
     velocity_.add_constraint_forces(bodies_, lambda_.data());
     // 7. eq. 2-1..2-8 under F_ext + F_c, with split impulse's push-out
-    integrate_with_push_out(bodies_, split_impulse_.push_out(), settings_.step.dt);
+    integrate_with_push_out(bodies_, split_impulse_.push_out(), settings_.step.dt,
+                            settings_.step.pitfalls);
   }
   time_ += settings_.step.dt;
   steps_taken_in_process.fetch_add(1, std::memory_order_relaxed);
@@ -170,6 +176,8 @@ void World::build_rows() {
   // the joints' rows, λ_exp = last step's λ
   joint_warm_start_.append_guess(rows_.data() + first_joint_row_, rows_.data() + rows_.size(),
                                  lambda_);
+  // the pitfall no-warm-start: every λ_exp = 0, the cache's points kept
+  if (settings_.step.pitfalls.has(Pitfall::no_warm_start)) std::fill(lambda_.begin(), lambda_.end(), 0.0);
 }
 
 void World::solve(WorldReport* report) {
@@ -179,7 +187,7 @@ void World::solve(WorldReport* report) {
   velocity_.assemble(bodies_, rows_, unconstrained_, dt);
   // eq. 3-24 by Projected Gauss-Seidel, friction bounds ±μ λc read as λc changes
   solve_recording(pgs_, velocity_, settings_.step.iterations, lambda_,
-                  report != nullptr ? &report->velocity : nullptr);
+                  report != nullptr ? &report->velocity : nullptr, settings_.step.pitfalls);
   remember_lambdas(report);
   split_impulse_.solve(velocity_, cache_.pairs(), settings_.contact, settings_.step,
                        settings_.position_iterations, pgs_,

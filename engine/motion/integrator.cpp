@@ -7,17 +7,17 @@ namespace {
 
 // eq. 2-6: q(t+Δt) = q + ½ ω̂ q Δt, then renormalised. The text stops at the sum; without the
 // normalisation |q| grows by O(|ω|² Δt²) every step and R stops being a rotation.
-Quat advance_orientation(const Quat& q, const Vec3& angular_velocity, double dt) {
+Quat advance_orientation(const Quat& q, const Vec3& angular_velocity, double dt, bool renormalise) {
   const Quat q_dot = quaternion_derivative(angular_velocity, q);  // eq. 1-29
   Quat next(q.w() + q_dot.w() * dt, q.x() + q_dot.x() * dt, q.y() + q_dot.y() * dt,
             q.z() + q_dot.z() * dt);
-  next.normalize();
+  if (renormalise) next.normalize();  // the pitfall no-renormalisation leaves the sum
   return next;
 }
 
 }  // namespace
 
-void integrate(RigidBody& body, double dt, Integration scheme) {
+void integrate(RigidBody& body, double dt, Integration scheme, Pitfalls pitfalls) {
   const Vec3 v_old = body.v;
   const Vec3 omega_old = body.angular_velocity;
   // eq. 2-1, 2-3: v(t+Δt) = v + m⁻¹ F Δt
@@ -28,7 +28,8 @@ void integrate(RigidBody& body, double dt, Integration scheme) {
   // eq. 2-5: x(t+Δt) = x + v(t+Δt) Δt (explicit variant: v(t))
   body.x += (semi ? body.v : v_old) * dt;
   // eq. 2-6 (explicit variant: ω(t))
-  body.q = advance_orientation(body.q, semi ? body.angular_velocity : omega_old, dt);
+  body.q = advance_orientation(body.q, semi ? body.angular_velocity : omega_old, dt,
+                               !pitfalls.has(Pitfall::no_renormalisation));
   // eq. 2-7, 2-8
   body.update_derived();
 }

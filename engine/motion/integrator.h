@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "motion/pitfalls.h"
 #include "motion/rigid_body.h"
 
 namespace lamina {
@@ -14,8 +15,10 @@ enum class Integration {
 };
 
 // Advances one body by Δt under its accumulated force and torque (eq. 2-1..2-8).
-// The accumulators are left as they are; the caller clears them.
-void integrate(RigidBody& body, double dt, Integration scheme = Integration::semi_implicit);
+// The accumulators are left as they are; the caller clears them. Of the pitfalls (pitfalls.h),
+// no-renormalisation is read here.
+void integrate(RigidBody& body, double dt, Integration scheme = Integration::semi_implicit,
+               Pitfalls pitfalls = {});
 
 // Adds gravity m g to every dynamic body's force (F_ext of eq. 5-2; a static body gets none).
 void apply_gravity(std::vector<RigidBody>& bodies, const Vec3& gravity);

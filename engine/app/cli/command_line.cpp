@@ -7,6 +7,7 @@
 #include "app/harness/render_request.h"
 #include "app/cli/exit_codes.h"
 #include "beyond/methods.h"
+#include "motion/pitfalls.h"
 #include "scene/scene_limits.h"
 
 namespace lamina::cli {
@@ -56,6 +57,13 @@ void add_run_options(CLI::App& run, RunOptions& o, std::string& explain_format) 
                "islands (chapter 6, beyond the text); `lamina solvers` says what each does "
                "(default: the scene's `solver`, islands when it has none)")
       ->type_name("NAME")->check(CLI::IsMember(solvers));
+  std::vector<std::string> pitfalls;
+  for (const PitfallInfo& p : pitfall_list()) pitfalls.push_back(p.name);
+  run.add_option("--pitfall", o.pitfalls,
+                 "put back one classic mistake, to watch it break the scene (may be given more "
+                 "than once): lambda-b1, no-renormalisation, clamp-increment, no-warm-start, "
+                 "crude-friction, baumgarte-no-slop (docs/ch6-beyond-the-text.md)")
+      ->type_name("NAME")->check(CLI::IsMember(pitfalls));
   auto* trace = add_optional(run, "--trace", o.trace,
                              "write every step to FILE: JSON Lines, or CSV when FILE ends in .csv "
                              "(contacts then go to FILE.contacts.csv)")->type_name("FILE");

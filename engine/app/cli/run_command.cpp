@@ -11,6 +11,7 @@
 #include "app/cli/simulation.h"
 #include "app/harness/format.h"
 #include "app/views/contact/world_explanation.h"
+#include "motion/pitfalls.h"
 #include "scene/scene_world.h"
 
 namespace lamina::cli {
@@ -21,6 +22,7 @@ WorldSettings run_settings(const RunOptions& o, Scene& scene) {
   if (o.dt) scene.step.dt = *o.dt;
   if (o.iterations) scene.step.iterations = *o.iterations;
   if (o.beta) scene.step.beta = *o.beta;
+  for (const std::string& name : o.pitfalls) scene.step.pitfalls.add(pitfall_named(name));
   WorldSettings settings = checked_settings(scene, o.scene);
   settings.cache.enabled = !o.no_cache;
   return settings;
@@ -159,7 +161,10 @@ void run_scene(Scene scene, const RunOptions& o) {
   const std::string& description = simulation.scene().description;
   const std::string& name = simulation.scene().name;
   if (o.frames) {
-    const std::string solver = "solver: " + simulation.world().settings().solver;
+    std::string solver = "solver: " + simulation.world().settings().solver;
+    for (const PitfallInfo& p : pitfall_list()) {
+      if (simulation.world().settings().step.pitfalls.has(p.pitfall)) solver += " · pitfall: " + p.name;
+    }
     recording.emplace(simulation.world(), o.every,
                       (description.empty() ? name : name + " · " + description) + " · " + solver);
   }

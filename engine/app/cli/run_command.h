@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/harness/render_request.h"
 #include "scene/scene.h"
@@ -19,6 +20,7 @@ struct RunOptions {
   std::optional<int> iterations;                // --iterations (else the scene's)
   std::optional<double> beta;                   // --beta (else the scene's)
   std::optional<std::string> solver;            // --solver NAME (else the scene's)
+  std::vector<std::string> pitfalls;            // --pitfall NAME, each (motion/pitfalls.h)
   bool no_cache = false;                        // --no-cache
   std::optional<std::filesystem::path> trace;   // --trace FILE
   std::optional<std::filesystem::path> frames;  // --frames DIR
