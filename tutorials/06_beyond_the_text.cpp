@@ -5,7 +5,9 @@
 //   heavy_on_light_100 …  each scene of the table, every contender's run overlaid (ch6/overlay),
 //   pyramid_20            with its plot over time;
 //   lambda_error          one step's λ after n sweeps of PGS and of the block solver, against
-//                         the exact λ of Lemke's pivoting (ch6/sweeps).
+//                         the exact λ of Lemke's pivoting (ch6/sweeps);
+//   pitfall_…             each classic mistake of motion/pitfalls.h put back, beside the same
+//                         run without it (ch6/overlay), with its plot.
 // Every run of the table is simulated once (ch6/lab) and drawn from what it recorded.
 #include <memory>
 #include <string>
@@ -61,7 +63,12 @@ int main(int argc, char** argv) {
       "plotted, and λ sweep by sweep against the exact solve",
       {render::Overlay::contacts, render::Overlay::forces}};
   std::vector<tutorial::SceneFactory> scenes = {tutorial::scene<Table>()};
-  for (const ch6::TableScene& s : ch6::table_scenes()) scenes.push_back(ch6::overlay_scene(s));
+  for (const ch6::TableScene& s : ch6::table_scenes()) {
+    scenes.push_back(ch6::overlay_scene(ch6::table_comparison(s)));
+  }
   scenes.push_back(ch6::sweeps_scene());
+  for (const ch6::PitfallDemo& d : ch6::pitfall_demos()) {
+    scenes.push_back(ch6::overlay_scene(ch6::pitfall_comparison(d)));
+  }
   return tutorial::run_tutorial(argc, argv, info, scenes);
 }

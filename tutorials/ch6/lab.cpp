@@ -8,6 +8,7 @@
 #include "app/harness/format.h"
 #include "app/reference/box2d_lab.h"
 #include "beyond/methods.h"
+#include "scene/builtin_scenes.h"
 #include "output/output_file.h"
 
 namespace lamina::ch6 {
@@ -75,6 +76,51 @@ const std::vector<LabRun>& lab_runs(const TableScene& scene) {
       found.push_back(c.name == box2d_name ? run_box2d_lab(scene.scene, lab_steps)
                                            : run_lab(scene.scene, c.name, lab_steps));
     }
+  }
+  return found;
+}
+
+const std::vector<PitfallDemo>& pitfall_demos() {
+  const render::Rect stack{Vec2(-3.0, -0.5), Vec2(3.0, 5.8)};
+  static const std::vector<PitfallDemo> list = {
+      {Pitfall::lambda_b1, "vertical-stack:5", "pgs", "lambda_b1", stack, "top box moved (m)"},
+      {Pitfall::no_renormalisation, "spinning-box", "pgs", "no_renormalisation",
+       {Vec2(-3.0, -0.5), Vec2(3.0, 5.0)}, "box moved (m)"},
+      {Pitfall::clamp_increment, "vertical-stack:5", "pgs", "clamp_increment", stack, "top box moved (m)"},
+      {Pitfall::no_warm_start, "vertical-stack:5", "pgs", "no_warm_start", stack, "top box moved (m)"},
+      {Pitfall::crude_friction, "friction-ramp", "pgs", "crude_friction",
+       {Vec2(-9.5, -5.8), Vec2(9.5, 6.0)}, "box moved (m)"},
+      {Pitfall::baumgarte_no_slop, "vertical-stack:5", "pgs", "baumgarte_no_slop", stack,
+       "top box moved (m)"},
+  };
+  return list;
+}
+
+Scene demo_scene(const PitfallDemo& demo) {
+  Scene scene;
+  if (demo.scene == "spinning-box") {
+    scene = builtin_scene("box-on-ground");
+    scene.name = "spinning-box";
+    scene.description = "a unit box thrown up at 4 m/s from y = 3, turning at 20 rad/s";
+    BodyDescription& box = scene.bodies.back();
+    box.position = {0.0, 3.0};
+    box.velocity = {0.0, 4.0};
+    box.angular_velocity = 20.0;
+  } else {
+    scene = builtin_scene(demo.scene);
+  }
+  scene.solver = demo.method;
+  return scene;
+}
+
+const std::vector<LabRun>& pitfall_runs(const PitfallDemo& demo) {
+  static std::map<std::string, std::vector<LabRun>> runs;
+  std::vector<LabRun>& found = runs[demo.stem];
+  if (found.empty()) {
+    Scene scene = demo_scene(demo);
+    found.push_back(run_lab(scene, lab_steps));
+    scene.step.pitfalls.add(demo.pitfall);
+    found.push_back(run_lab(scene, lab_steps));
   }
   return found;
 }

@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "app/views/beyond/solver_lab.h"
+#include "motion/pitfalls.h"
 #include "render/camera.h"
 #include "render/colour.h"
+#include "scene/scene.h"
 
 namespace lamina::ch6 {
 
@@ -41,6 +43,23 @@ const std::vector<LabRun>& lab_runs(const TableScene& scene);
 std::string table_cell(const TableScene& scene, const LabRun& run);
 // The bars of Lamina's own method on the scene, in words.
 std::string bars(const TableScene& scene);
+
+// A pitfall (motion/pitfalls.h) shown on a scene where it breaks what the engine holds: the
+// same run with and without it.
+struct PitfallDemo {
+  Pitfall pitfall;
+  std::string scene;    // a built-in scene, or "spinning-box" (demo_scene)
+  std::string method;   // the method both runs step with
+  std::string stem;     // the files' stem
+  render::Rect view;    // the least region the frames show
+  std::string measure;  // what the panel and plot follow: LabSample::top, named
+};
+const std::vector<PitfallDemo>& pitfall_demos();
+// The demo's scene, by its method: a built-in one, or the spinning box (a unit box thrown up at
+// 4 m/s from y = 3 turning at 20 rad/s over the ground).
+Scene demo_scene(const PitfallDemo& demo);
+// [the run as it is, the run with the pitfall], simulated on first use and kept.
+const std::vector<LabRun>& pitfall_runs(const PitfallDemo& demo);
 
 // The table as lines of text, contenders down, scenes across (for a frame's panel).
 std::vector<std::string> table_lines();

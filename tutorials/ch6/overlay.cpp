@@ -6,8 +6,8 @@
 
 #include "app/harness/format.h"
 #include "app/harness/plot.h"
-#include "app/views/contact/world_explanation.h"
 #include "app/views/contact/stepped_world.h"
+#include "app/views/contact/world_explanation.h"
 #include "beyond/methods.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
@@ -31,137 +31,166 @@ render::Body body_at(const BodyDescription& d, const Pose& pose, render::Colour 
   return b;
 }
 
-// What the scene's plot follows: its measure at a sample, in the plot's units.
-double followed(const TableScene& s, const LabSample& x) {
-  if (s.scene.rfind("heavy-on-light", 0) == 0) return 1000.0 * x.overlap;  // mm
-  if (s.scene == "ball-and-chain:100") return 100.0 * x.stretch;           // %
-  return x.top;                                                            // m
-}
-
-// A logarithmic plot shows a holding run (nm, or round-off) beside a falling one (metres); a
-// value below 1 µm is drawn at 1 µm. The chain's stretch, which may be negative, stays linear.
-bool log_plot(const TableScene& s) { return s.scene != "ball-and-chain:100"; }
-double micrometre(const TableScene& s) { return s.scene.rfind("heavy-on-light", 0) == 0 ? 1e-3 : 1e-6; }
-
-std::string followed_name(const TableScene& s) {
-  if (s.scene.rfind("heavy-on-light", 0) == 0) return "deepest overlap (mm)";
-  if (s.scene == "ball-and-chain:100") return "pin to ball past its rest length (%)";
-  if (s.scene == "vertical-stack:20") return "top box moved (m)";
-  return "apex moved (m)";
-}
-
 class Overlay : public tutorial::Scene {
  public:
-  explicit Overlay(TableScene scene) : table_(std::move(scene)), scene_(builtin_scene(table_.scene)) {}
+  explicit Overlay(Comparison c) : c_(std::move(c)) {}
 
   tutorial::SceneInfo info() const override {
-    return {table_.stem, scene_.step.dt, lab_steps / every + 1, every, view()};
+    return {c_.stem, c_.scene.step.dt, lab_steps / every + 1, every, view()};
   }
 
   void step() override { ++step_; }
 
   void draw(render::Frame& frame) const override {
-    const std::vector<LabRun>& runs = lab_runs(table_);
-    frame.caption = "Chapter 6 · " + table_.scene + " by Box2D 2.4.1 and each of Lamina's methods, overlaid";
-    for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
-      if (scene_.bodies[b].is_static) {
-        frame.bodies.push_back(body_at(scene_.bodies[b], runs[0].poses[0][b], render::palette::grid));
+    const std::vector<LabRun>& runs = c_.runs();
+    frame.caption = c_.caption;
+    for (std::size_t b = 0; b < c_.scene.bodies.size(); ++b) {
+      if (c_.scene.bodies[b].is_static) {
+        frame.bodies.push_back(body_at(c_.scene.bodies[b], runs[0].poses[0][b], render::palette::grid));
       }
     }
     render::Panel panel;
     panel.corner = render::Corner::top_left;
-    panel.title = "largest so far: " + followed_name(table_);
-    for (std::size_t c = 0; c < runs.size(); ++c) {
-      const LabRun& run = runs[c];
-      const Contender& who = contenders()[c];
+    panel.title = "largest so far: " + c_.measure;
+    std::size_t width = 0;
+    for (const Contender& who : c_.who) width = std::max(width, who.name.size());
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      const LabRun& run = runs[r];
+      const Contender& who = c_.who[r];
       // the state at t = step_ Δt; a run that diverged stays drawn where it was last finite
       const std::size_t k = std::min<std::size_t>(static_cast<std::size_t>(step_), run.poses.size() - 1);
-      for (std::size_t b = 0; b < scene_.bodies.size(); ++b) {
-        if (scene_.bodies[b].is_static) continue;
-        frame.bodies.push_back(body_at(scene_.bodies[b], run.poses[k][b],
+      for (std::size_t b = 0; b < c_.scene.bodies.size(); ++b) {
+        if (c_.scene.bodies[b].is_static) continue;
+        frame.bodies.push_back(body_at(c_.scene.bodies[b], run.poses[k][b],
                                        render::with_alpha(tint(who.colour, 0.7), 110)));
       }
       frame.legend.push_back({render::LegendEntry::Sample::swatch, who.colour, who.name});
       double most = 0.0;  // over the samples up to the state shown
-      for (std::size_t i = 0; i < k; ++i) most = std::max(most, followed(table_, run.samples[i]));
+      for (std::size_t i = 0; i < k; ++i) most = std::max(most, c_.followed(run.samples[i]));
       std::string line = who.name;
-      line.resize(std::max<std::size_t>(line.size(), 12), ' ');
-      const bool gone = run.diverged && k + 1 == run.poses.size() && static_cast<std::size_t>(step_) >= k + 1;
+      line.resize(width + 2, ' ');
+      const bool gone = run.diverged && static_cast<std::size_t>(step_) >= run.poses.size();
       panel.lines.push_back(line + (gone ? "diverged" : fixed(most, 3)));
     }
     frame.panels.push_back(panel);
     frame.legend_corner = render::Corner::top_right;
   }
 
-  // The scene's region, grown to hold every moving body of every run at every step (bodies thrown
-  // out of it would be drawn over the caption), with 0.3 m to spare.
-  render::Rect view() const {
-    render::Rect r = table_.view;
-    for (const LabRun& run : lab_runs(table_)) {
-      for (const std::vector<Pose>& poses : run.poses) {
-        for (std::size_t b = 0; b < poses.size(); ++b) {
-          const BodyDescription& d = scene_.bodies[b];
-          if (d.is_static) continue;
-          const double reach = 0.3 + (d.shape.type == ShapeType::circle ? d.shape.radius : d.shape.half_extents.norm());
-          r.min = r.min.cwiseMin(poses[b].head<2>() - Vec2(reach, reach));
-          r.max = r.max.cwiseMax(poses[b].head<2>() + Vec2(reach, reach));
-        }
-      }
-    }
-    return r;
-  }
-
   tutorial::Explanation explain() const override {
-    // What `islands`, the default, solved in this step: the World stepped again to it (the
-    // table's runs keep poses, not reports).
-    lamina::Scene scene = scene_;
-    scene.solver = default_method;
-    view::SteppedWorld world(build_world(scene, world_settings(scene)));
+    // What one of the runs solved in this step: the World stepped again to it (the runs keep
+    // poses, not reports).
+    view::SteppedWorld world(build_world(c_.explained, world_settings(c_.explained)));
     for (long k = 0; k <= step_; ++k) world.step();
     std::vector<std::string> names;
-    for (const BodyDescription& b : scene_.bodies) names.push_back(b.name);
+    for (const BodyDescription& b : c_.scene.bodies) names.push_back(b.name);
     return view::explain_world_step(world.world(), world.report(), names);
   }
 
   void write_data(const std::filesystem::path& folder) const override {
-    const std::vector<LabRun>& runs = lab_runs(table_);
-    tutorial::Plot plot{table_.stem,
-                        table_.scene + ": " + followed_name(table_) + ", 60 Hz" +
-                            (log_plot(table_) ? " (below 1 µm drawn at 1 µm)" : ""),
-                        "t (s)", followed_name(table_), {}, {},
-                        log_plot(table_) ? "bottom right" : "center right", log_plot(table_)};
-    tutorial::Plot energy{table_.stem + "_energy", table_.scene + ": mechanical energy, 60 Hz",
+    const std::vector<LabRun>& runs = c_.runs();
+    tutorial::Plot plot{c_.stem,
+                        c_.scene.name + ": " + c_.measure + ", 60 Hz" +
+                            (c_.log_plot ? " (below 1 µm drawn at 1 µm)" : ""),
+                        "t (s)", c_.measure, {}, {}, c_.legend, c_.log_plot};
+    tutorial::Plot energy{c_.stem + "_energy", c_.scene.name + ": mechanical energy, 60 Hz",
                           "t (s)", "E (J)", {}, {}, "bottom left"};
-    for (std::size_t c = 0; c < runs.size(); ++c) {
-      const Contender& who = contenders()[c];
+    for (const Contender& who : c_.who) {
       plot.series.push_back({who.name, who.colour, who.name == "islands"});
       energy.series.push_back({who.name, who.colour, who.name == "islands"});
     }
     for (int k = 0; k < lab_steps; ++k) {
-      std::vector<double> row{(k + 1) * scene_.step.dt}, e_row = row;
+      std::vector<double> row{(k + 1) * c_.scene.step.dt}, e_row = row;
       for (const LabRun& run : runs) {
         const bool have = k < static_cast<int>(run.samples.size());
-        const double value = have ? followed(table_, run.samples[k]) : std::numeric_limits<double>::quiet_NaN();
-        row.push_back(log_plot(table_) ? std::max(value, micrometre(table_)) : value);
+        const double value = have ? c_.followed(run.samples[k]) : std::numeric_limits<double>::quiet_NaN();
+        row.push_back(c_.log_plot ? std::max(value, c_.floor) : value);
         e_row.push_back(have ? run.samples[k].energy : std::numeric_limits<double>::quiet_NaN());
       }
       plot.rows.push_back(row);
       energy.rows.push_back(e_row);
     }
     tutorial::write_plot(folder, plot);
-    if (!scene_.joints.empty()) tutorial::write_plot(folder, energy);
+    if (!c_.scene.joints.empty()) tutorial::write_plot(folder, energy);
   }
 
  private:
-  TableScene table_;
-  lamina::Scene scene_;
+  // The comparison's region, grown upwards to hold every moving body of every run at every step
+  // (a body thrown above it would be drawn over the caption), with 0.3 m to spare, and sideways
+  // by as much as half its width each way; a body sliding or falling further leaves the frame.
+  render::Rect view() const {
+    const render::Rect least = c_.view;
+    render::Rect r = least;
+    for (const LabRun& run : c_.runs()) {
+      for (const std::vector<Pose>& poses : run.poses) {
+        for (std::size_t b = 0; b < poses.size(); ++b) {
+          const BodyDescription& d = c_.scene.bodies[b];
+          if (d.is_static) continue;
+          const double reach = 0.3 + (d.shape.type == ShapeType::circle ? d.shape.radius : d.shape.half_extents.norm());
+          r.min.x() = std::min(r.min.x(), poses[b].x() - reach);
+          r.max = r.max.cwiseMax(poses[b].head<2>() + Vec2(reach, reach));
+        }
+      }
+    }
+    const double width = least.size().x();
+    r.min.x() = std::max(r.min.x(), least.min.x() - 0.5 * width);
+    r.max.x() = std::min(r.max.x(), least.max.x() + 0.5 * width);
+    return r;
+  }
+
+  Comparison c_;
   long step_ = 0;  // k: the frame shows the state at t = k Δt, poses[k] of each run
 };
 
 }  // namespace
 
-tutorial::SceneFactory overlay_scene(const TableScene& scene) {
-  return [scene](const tutorial::Options&) { return std::make_unique<Overlay>(scene); };
+tutorial::SceneFactory overlay_scene(Comparison comparison) {
+  return [comparison](const tutorial::Options&) { return std::make_unique<Overlay>(comparison); };
+}
+
+Comparison table_comparison(const TableScene& s) {
+  Comparison c;
+  c.stem = s.stem;
+  c.caption = "Chapter 6 · " + s.scene + " by Box2D 2.4.1 and each of Lamina's methods, overlaid";
+  c.scene = builtin_scene(s.scene);
+  c.explained = c.scene;
+  c.explained.solver = default_method;  // Lamina's own
+  c.view = s.view;
+  c.who = contenders();
+  c.runs = [s]() -> const std::vector<LabRun>& { return lab_runs(s); };
+  const bool heavy = s.scene.rfind("heavy-on-light", 0) == 0;
+  const bool chain = s.scene == "ball-and-chain:100";
+  c.measure = heavy ? "deepest overlap (mm)"
+              : chain ? "pin to ball past its rest length (%)"
+              : s.scene == "vertical-stack:20" ? "top box moved (m)" : "apex moved (m)";
+  c.followed = heavy ? [](const LabSample& x) { return 1000.0 * x.overlap; }
+               : chain ? [](const LabSample& x) { return 100.0 * x.stretch; }
+               : [](const LabSample& x) { return x.top; };
+  // A logarithmic plot shows a holding run (round-off) beside a falling one (metres); the
+  // chain's stretch, which may be negative, stays linear.
+  c.log_plot = !chain;
+  c.floor = heavy ? 1e-3 : 1e-6;  // 1 µm
+  c.legend = chain ? "center right" : "bottom right";
+  return c;
+}
+
+Comparison pitfall_comparison(const PitfallDemo& demo) {
+  Comparison c;
+  c.stem = "pitfall_" + demo.stem;
+  c.scene = demo_scene(demo);
+  c.explained = c.scene;
+  c.explained.step.pitfalls.add(demo.pitfall);  // what the mistake computes
+  c.caption = "Chapter 6 · pitfall " + pitfall_name(demo.pitfall) + " on " + c.scene.name + ": " +
+              demo.method + " as it is, and with the mistake";
+  c.view = demo.view;
+  c.who = {{demo.method + " as it is", render::palette::bluish_green},
+           {"with " + pitfall_name(demo.pitfall), render::palette::vermillion}};
+  c.runs = [demo]() -> const std::vector<LabRun>& { return pitfall_runs(demo); };
+  c.measure = demo.measure;
+  c.followed = [](const LabSample& x) { return x.top; };
+  c.log_plot = true;
+  c.floor = 1e-6;
+  c.legend = "bottom right";
+  return c;
 }
 
 }  // namespace lamina::ch6

@@ -1,14 +1,40 @@
-// One scene of chapter 6's table, every contender's run of it drawn on one picture: each
-// contender's bodies translucent in its own colour (the legend names them), the static bodies
-// once in grey, and a panel with what each has reached so far. Its plot over time (overlap,
-// sway, stretch, apex) and, for the chain, the energy, are written beside the frames.
+// Runs of one scene drawn on one picture: each run's moving bodies translucent in its own
+// colour (the legend names them), the static bodies once in grey, and a panel with the largest
+// value each run has reached so far of what the comparison follows. Its plot over time of that
+// value (and, for a scene with joints, of the energy) is written beside the frames. Chapter 6
+// compares every contender on each scene of the table, and each pitfall with the engine as it is.
 #pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
 
 #include "app/harness/tutorial.h"
 #include "ch6/lab.h"
+#include "scene/scene.h"
 
 namespace lamina::ch6 {
 
-tutorial::SceneFactory overlay_scene(const TableScene& scene);
+struct Comparison {
+  std::string stem;                   // the frames' and plot's file stem
+  std::string caption;                // the frames' caption
+  lamina::Scene scene;                // its bodies' shapes, which are static, its Δt
+  lamina::Scene explained;            // what --explain K steps: the scene by one method
+  render::Rect view;                  // the least region the frames show, in m
+  std::vector<Contender> who;         // one per run: its name and colour
+  std::function<const std::vector<LabRun>&()> runs;  // the runs, simulated once
+  std::string measure;                // what the panel and plot follow, with its unit
+  std::function<double(const LabSample&)> followed;  // its value at a sample
+  bool log_plot = false;              // a log y axis, values below `floor` (1 µm) drawn at it
+  double floor = 0.0;                 // 1 µm in the measure's unit
+  std::string legend = "top right";   // where the plot's legend sits
+};
+
+tutorial::SceneFactory overlay_scene(Comparison comparison);
+
+// Each scene of the table, every contender's run of it.
+Comparison table_comparison(const TableScene& scene);
+// A pitfall's demonstration: the engine as it is beside the same run with the pitfall.
+Comparison pitfall_comparison(const PitfallDemo& demo);
 
 }  // namespace lamina::ch6

@@ -63,8 +63,12 @@ std::vector<Pose> poses_of(const World& world) {
 LabRun run_lab(const std::string& scene_name, const std::string& method, int steps) {
   Scene scene = builtin_scene(scene_name);
   scene.solver = method;
+  return run_lab(scene, steps);
+}
+
+LabRun run_lab(const Scene& scene, int steps) {
   World world = build_world(scene, world_settings(scene));
-  LabMeter meter(scene, method, poses_of(world));
+  LabMeter meter(scene, scene.solver, poses_of(world));
   const double start = thread_cpu_seconds();
   for (int k = 0; k < steps; ++k) {
     world.step();

@@ -69,8 +69,10 @@ class LabMeter {
   LabRun run_;
 };
 
-// Runs the built-in scene by the method for `steps` steps of its own Δt (60 Hz for the table's
-// scenes). Throws what build_world and with_method throw for a bad name.
+// Runs the scene, by its own method and pitfalls, for `steps` steps of its own Δt (60 Hz for the
+// table's scenes). Throws what build_world and with_method throw.
+LabRun run_lab(const Scene& scene, int steps);
+// The same for a built-in scene (NAME or NAME:P) by the method.
 LabRun run_lab(const std::string& scene, const std::string& method, int steps);
 
 }  // namespace lamina
