@@ -3,6 +3,7 @@
 #include "beyond/block_method.h"
 #include "beyond/exact_method.h"
 #include "beyond/island_method.h"
+#include "beyond/soft_step.h"
 #include "kinematics/require.h"
 
 namespace lamina {
@@ -23,6 +24,10 @@ const std::vector<Chapter6>& chapter6() {
         "each island's MLCP solved exactly by Lemke's pivoting, Coulomb friction included (the "
         "text's reference [3]); islands past 240 variables by pgs"},
        make_exact_method},
+      {{"soft-step",
+        "Box2D v3's soft step: 4 substeps, contact and joint rows softened by a spring (30 Hz "
+        "and 60 Hz), a relax sweep without bias, restitution last"},
+       make_soft_step_method},
       {{"islands",
         "Lamina's own: small islands solved exactly, those with joints in 8 substeps, large ones "
         "by pgs; split impulse, slop and restitution as pgs (the default)"},

@@ -4,6 +4,7 @@
 //
 //   block    PGS with two-point manifolds solved as 2 × 2 blocks (block_method.h)
 //   exact    every island's MLCP solved exactly by pivoting (exact_method.h)
+//   soft-step  Box2D v3's substepped soft step (soft_step.h)
 //   islands  Lamina's own: per island, exact, substepped exact, or PGS (island_method.h); the
 //            default of `lamina run` and of scene files
 #pragma once

@@ -60,7 +60,7 @@ const std::vector<Contender>& contenders() {
     const std::map<std::string, render::Colour> colours = {
         {"text", render::palette::vermillion},   {"pgs", render::palette::orange},
         {"block", render::palette::reddish_purple}, {"exact", render::palette::sky_blue},
-        {"islands", render::palette::bluish_green}};
+        {"soft-step", render::palette::grey},    {"islands", render::palette::bluish_green}};
     std::vector<Contender> all = {{box2d_name, render::palette::blue}};
     for (const SolverInfo& m : method_list()) all.push_back({m.name, colours.at(m.name)});
     return all;
