@@ -163,7 +163,7 @@ TEST_SUITE("Contact") {
     };
     // By `pgs` and by `islands` (chapter 6's default, whose exact solve must not creep either).
     for (const Ramp ramp : {Ramp{10, 0.3}, Ramp{30, 0.3}, Ramp{20, 0.6}, Ramp{40, 0.6}}) {
-      for (const char* method : {"pgs", "islands"}) {
+      for (const std::string method : {"pgs", "islands"}) {
         CAPTURE(ramp.degrees);
         CAPTURE(ramp.mu);
         CAPTURE(method);
@@ -193,7 +193,7 @@ TEST_SUITE("Contact") {
   TEST_CASE("a resting box: the contact force converges to m g and the contact torque to 0") {
     // Chapter 5, t → ∞: f_c1 → m1 (0, 9.8), τ_c1 → 0, after a tilted landing as in the text;
     // by `pgs` (PGS converged, warm started) and by `islands` (solved exactly).
-    for (const char* method : {"pgs", "islands"}) {
+    for (const std::string method : {"pgs", "islands"}) {
       CAPTURE(method);
       World world = box_on_ground(with_method(WorldSettings(), method), 2.0, 0.3);
       run(world, 599);

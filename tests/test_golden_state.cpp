@@ -94,7 +94,7 @@ std::uint64_t fnv1a64(const std::vector<unsigned char>& bytes) {
   return hash;
 }
 
-std::vector<unsigned char> final_state(Scene scene, const char* solver) {
+std::vector<unsigned char> final_state(Scene scene, const std::string& solver) {
   scene.solver = solver;
   World world = build_world(scene, world_settings(scene));
   for (int step = 0; step < golden_steps; ++step) world.step();
@@ -107,8 +107,9 @@ TEST_SUITE("Determinism") {
   TEST_CASE("each scene's state after 5 s matches its golden hash, bit for bit") {
     const bool print = std::getenv("LAMINA_PRINT_GOLDEN") != nullptr;
     for (const Golden& expected : golden) {
-      CAPTURE(expected.scene);
-      CAPTURE(expected.solver);
+      const std::string scene = expected.scene, solver = expected.solver;
+      CAPTURE(scene);
+      CAPTURE(solver);
       const std::uint64_t hash = fnv1a64(final_state(builtin_scene(expected.scene), expected.solver));
       if (print) {
         std::printf("    {\"%s\", \"%s\", 0x%016" PRIx64 "},\n", expected.scene, expected.solver, hash);
@@ -120,8 +121,9 @@ TEST_SUITE("Determinism") {
   TEST_CASE("the same scene run twice in one process gives identical bytes") {
     // Identity, stronger than equal hashes: every byte of every body's state.
     for (const Golden& entry : golden) {
-      CAPTURE(entry.scene);
-      CAPTURE(entry.solver);
+      const std::string scene_name = entry.scene, solver = entry.solver;
+      CAPTURE(scene_name);
+      CAPTURE(solver);
       const Scene scene = builtin_scene(entry.scene);
       CHECK(final_state(scene, entry.solver) == final_state(scene, entry.solver));
     }
@@ -130,7 +132,7 @@ TEST_SUITE("Determinism") {
   TEST_CASE("moving one box by one ulp changes the hash") {
     // The hash sees the smallest change a double can make: the last box raised by one unit in
     // the last place (std::nextafter), which the contacts then carry into every body it touches.
-    for (const char* solver : {"pgs", "islands"}) {
+    for (const std::string solver : {"pgs", "islands"}) {
       for (const char* name : {"box-on-ground-tilted", "vertical-stack", "pyramid:10"}) {
         CAPTURE(solver);
         CAPTURE(name);

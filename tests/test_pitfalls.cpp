@@ -146,7 +146,7 @@ TEST_SUITE("Pitfalls") {
   }
 
   TEST_CASE("baumgarte-no-slop: the World takes Baumgarte's bias with no slop, whatever the method") {
-    for (const char* method : {"pgs", "islands"}) {
+    for (const std::string method : {"pgs", "islands"}) {
       CAPTURE(method);
       const World plain = scene_world("box-on-ground", method, Pitfalls());
       const World slipped = scene_world("box-on-ground", method, only(Pitfall::baumgarte_no_slop));

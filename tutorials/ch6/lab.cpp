@@ -183,7 +183,7 @@ void write_table(const std::filesystem::path& folder) {
   write_file_atomically(folder / "solver_table.csv", csv.str());
   // The cost, apart: timings differ from run to run, the table does not.
   std::ostringstream cost;
-  cost << "| scene (ms per step, × Box2D's) |";
+  cost << "| scene (ms per step, × Box2D's; the MLCP's rows per step) |";
   for (const Contender& c : contenders()) cost << " " << c.name << " |";
   cost << "\n|---|";
   for (std::size_t c = 0; c < contenders().size(); ++c) cost << "---|";
@@ -192,7 +192,9 @@ void write_table(const std::filesystem::path& folder) {
     const std::vector<LabRun>& runs = lab_runs(s);
     cost << "| " << s.scene << " |";
     for (const LabRun& r : runs) {
-      cost << " " << fixed(r.ms_per_step, 3) << " (" << fixed(r.ms_per_step / runs[0].ms_per_step, 2) << "×) |";
+      cost << " " << fixed(r.ms_per_step, 3) << " (" << fixed(r.ms_per_step / runs[0].ms_per_step, 2) << "×)";
+      if (r.rows_per_step > 0.0) cost << ", " << fixed(r.rows_per_step, 0) << " rows";
+      cost << " |";
     }
     cost << "\n";
   }

@@ -70,8 +70,11 @@ LabRun run_lab(const Scene& scene, int steps) {
   World world = build_world(scene, world_settings(scene));
   LabMeter meter(scene, scene.solver, poses_of(world));
   const double start = thread_cpu_seconds();
+  double rows = 0.0;
   for (int k = 0; k < steps; ++k) {
     world.step();
+    for (const ContactPair& pair : world.contact_pairs()) rows += pair.rows.count;
+    for (int j = 0; j < world.joint_count(); ++j) rows += world.joint_rows(j).count;
     if (first_non_finite_body(world)) {
       meter.diverged();
       break;
@@ -81,6 +84,7 @@ LabRun run_lab(const Scene& scene, int steps) {
     meter.sample(world.time(), poses_of(world), overlap, mechanical_energy(world));
   }
   meter.cost(thread_cpu_seconds() - start);
+  meter.rows(rows);
   return meter.run();
 }
 

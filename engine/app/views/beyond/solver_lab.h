@@ -44,6 +44,7 @@ struct LabRun {
   double top_rise = 0.0;           // the last body's y at the end minus at the start, m
   double stretch = 0.0;            // the largest stretch
   double ms_per_step = 0.0;        // the thread's CPU time per step, stepping and measuring
+  double rows_per_step = 0.0;      // the mean rows of a step's MLCP (Lamina's runs; 0 for Box2D)
 };
 
 // The CPU time this thread has used, in s (a run's cost, untouched by other processes).
@@ -59,6 +60,8 @@ class LabMeter {
   void diverged() { run_.diverged = true; }
   // The run's CPU time, spread over its steps.
   void cost(double cpu_seconds) { run_.ms_per_step = 1e3 * cpu_seconds / static_cast<double>(run_.samples.size()); }
+  // The rows of the steps' MLCPs, summed over the run.
+  void rows(double total) { run_.rows_per_step = total / static_cast<double>(run_.samples.size()); }
   const LabRun& run() const { return run_; }
 
  private:
