@@ -16,7 +16,7 @@ namespace lamina::render::testing {
 // Small frames keep the tests fast, also under the sanitizers.
 inline constexpr FrameSize test_size{320, 180};
 
-// Bodies, ground, a joint, fresh and cached contacts with forces, arrows, a path, labels,
+// Bodies, ground, a joint, new and kept contacts with forces, arrows, a path, labels,
 // 3D items, a panel and the legend: every painter has work to do.
 inline Frame full_frame() {
   Frame f;
@@ -37,8 +37,8 @@ inline Frame full_frame() {
   disc.fill = tint(palette::orange, 0.35);
   f.bodies.push_back(disc);
   f.joints.push_back({Vec2(2.0, 3.0), Vec2(2.0, 1.5)});
-  f.contacts.push_back({Vec2(-0.5, 0.0), Vec2(0.0, 1.0), 40.0, Vec2(1.0, 0.0), -8.0, false});
-  f.contacts.push_back({Vec2(0.5, 0.0), Vec2(0.0, 1.0), 25.0, Vec2(1.0, 0.0), 0.0, true});
+  f.contacts.push_back({Vec2(-0.5, 0.0), Vec2(0.0, 1.0), 40.0, Vec2(1.0, 0.0), -8.0, Contact::Origin::fresh});
+  f.contacts.push_back({Vec2(0.5, 0.0), Vec2(0.0, 1.0), 25.0, Vec2(1.0, 0.0), 0.0, Contact::Origin::kept});
   f.arrows.push_back({Vec2(-2.0, 2.0), Vec2(-1.0, 2.5), palette::vermillion, "F", std::nullopt});
   f.labels.push_back({Vec2(0.0, 2.5), "ω × r", palette::ink, Label::Align::centre});
   // 3D items, drawn by the default cabinet projection, clear of the box.

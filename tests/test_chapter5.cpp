@@ -168,7 +168,7 @@ TEST_SUITE("Chapter5") {
         const Vec3 x_corner = before.x + before.rotation * lift(r);
         const Vec3 v_corner = before.v + before.angular_velocity.cross(x_corner - before.x);  // eq. 5-4
         const int j = contact.row;  // its row in the MLCP, as the step recorded it
-        const std::string tag = std::string(name) + (contact.fresh ? " (fresh)" : " (cached)");
+        const std::string tag = std::string(name) + (contact.fresh() ? " (fresh)" : " (cached)");
         const std::array<double, 2> bounds = mlcp.mlcp.bounds(j, mlcp.solution.lambda.data());
         row("r_" + std::string(name) + " = R1ᵀ (x_" + name + " − x1) (m)", "5-12", fixed_vector(r));
         row("x_" + tag + " = x1 + R1 r (m)", "5-12", fixed_vector(x_corner));
@@ -195,7 +195,7 @@ TEST_SUITE("Chapter5") {
         // One row: the narrow phase gave the deepest corner a, nothing else (eq. 5-11).
         REQUIRE(pair.count == 1);
         CHECK(mlcp.mlcp.row_count() == 1);
-        CHECK(pair.contacts[0].fresh);
+        CHECK(pair.contacts[0].fresh());
         CHECK(pair.contacts[0].separation == doctest::Approx(-0.01).epsilon(1e-9));
         r_a_at_tau = pair.contacts[0].anchor[0];
         // At rest, one row: J V(τ+Δt) = (d λ − g) Δt must equal the asked velocity, so
@@ -221,9 +221,9 @@ TEST_SUITE("Chapter5") {
         // Two rows (eq. 5-19..5-21): a from the cache, re-placed from the same r_a, and b fresh.
         REQUIRE(pair.count == 2);
         CHECK(mlcp.mlcp.row_count() == 2);
-        CHECK_FALSE(pair.contacts[0].fresh);
+        CHECK_FALSE(pair.contacts[0].fresh());
         CHECK(pair.contacts[0].anchor[0] == r_a_at_tau);
-        CHECK(pair.contacts[1].fresh);
+        CHECK(pair.contacts[1].fresh());
         CHECK(mlcp.solution.lambda[pair.contacts[0].row] > 0.0);
         CHECK(mlcp.solution.lambda[pair.contacts[1].row] > 0.0);
       }

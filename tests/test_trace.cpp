@@ -121,13 +121,13 @@ TEST_SUITE("Trace") {
 
   TEST_CASE("a trace line has the documented keys, in order, numbers in shortest form") {
     TraceStep step{1, 1.0 / 60.0, {{"box", {0.0, 0.1 + 0.2}, 0.3, {0.0, -0.16}, 0.0}}, {}};
-    step.contacts.push_back({{"ground", "box"}, {0.1, 0.0}, {0.0, 1.0}, 0.001, 0.08, 0.0, true});
+    step.contacts.push_back({{"ground", "box"}, {0.1, 0.0}, {0.0, 1.0}, 0.001, 0.08, 0.0, true, "kept"});
     CHECK(trace_json_line(step) ==
           R"({"step":1,"time":0.016666666666666666,"bodies":[{"name":"box",)"
           R"("position":[0.0,0.30000000000000004],"angle":0.3,"velocity":[0.0,-0.16],)"
           R"("angular_velocity":0.0}],"contacts":[{"bodies":["ground","box"],"point":[0.1,0.0],)"
           R"("normal":[0.0,1.0],"depth":0.001,"normal_impulse":0.08,"tangent_impulse":0.0,)"
-          R"("cached":true}]})");
+          R"("cached":true,"origin":"kept"}]})");
   }
 
   TEST_CASE_FIXTURE(TraceFolder, "a CSV trace has one row per dynamic body per step and its contacts beside it") {

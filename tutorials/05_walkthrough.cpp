@@ -196,7 +196,9 @@ class Walkthrough : public tutorial::Scene {
     if (i >= 0) {
       const ContactInfo c = contacts()[static_cast<std::size_t>(i)];
       view.lines[0] = "ε = " + fixed(std::min(c.separation, 0.0), 4) + " m";
-      view.lines[1] = c.cached ? "cached (eq. 5-12)" : "fresh: the deepest";
+      view.lines[1] = c.origin == ContactOrigin::kept      ? "kept (eq. 5-12)"
+                      : c.origin == ContactOrigin::refound ? "re-found: the deepest"
+                                                           : "new: the deepest";
       ch5::draw_inset(frame, view, box(), r, &c.point);
       return;
     }
@@ -237,7 +239,7 @@ class Walkthrough : public tutorial::Scene {
       const double epsilon = std::min(c.separation, 0.0);
       // eq. 5-4: v_a = v1 + ω1 × (x_a − x1), the corner's velocity at t
       const Vec3 v = box().v + box().angular_velocity.cross(corner(i) - box().x);
-      p.lines.push_back(n + (c.fresh ? " fresh" : " cached") + ": x_" + n + " = " +
+      p.lines.push_back(n + " " + origin_name(c.origin) + ": x_" + n + " = " +
                         pair_text(corner(i), 4) + ", r_" + n + " = " + pair_text(anchor(i), 2) +
                         "  (5-12)");
       p.lines.push_back("  N·v_" + n + " = " + fixed(N.dot(v), 4) + " m/s (5-4, 5-5), ε = " +

@@ -1,6 +1,18 @@
 #include "contact/contact.h"
 
 namespace lamina {
+
+const char* origin_name(ContactOrigin origin) {
+  switch (origin) {
+    case ContactOrigin::fresh:
+      return "new";
+    case ContactOrigin::refound:
+      return "refound";
+    case ContactOrigin::kept:
+      return "kept";
+  }
+  return "new";
+}
 namespace {
 
 const Pose2& pose_of(int k, const Pose2& pose1, const Pose2& pose2) { return k == 0 ? pose1 : pose2; }
@@ -21,7 +33,7 @@ Contact make_contact(const Collision& collision, const Pose2& pose1, const Pose2
   }
   contact.local_normal = pose_of(ref, pose1, pose2).R.transpose() * collision.normal;
   contact.reference = ref;
-  contact.fresh = true;
+  contact.origin = ContactOrigin::fresh;
   place(contact, pose1, pose2);
   return contact;
 }

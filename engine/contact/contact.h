@@ -17,6 +17,17 @@
 
 namespace lamina {
 
+// Where a contact point of a step comes from (Fig 4-2..4-5):
+enum class ContactOrigin {
+  fresh,    // new: this step's deepest point (Fig 4-2), no λ from before: a cold start
+  refound,  // this step's deepest point found where a cached point was: it takes that point's
+            // place and its λ (the warm start)
+  kept      // a cached point re-placed from its anchors (eq. 5-12), not found this step
+};
+
+// "new", "refound", "kept": how traces and explanations name an origin.
+const char* origin_name(ContactOrigin origin);
+
 struct Contact {
   std::array<Vec2, 2> anchor{Vec2::Zero(), Vec2::Zero()};  // r_k on each body's surface, body k's frame, in m (eq. 5-12)
   Vec2 local_normal = Vec2::UnitY();  // n in the reference body's frame, unit, body 1 → body 2
@@ -29,11 +40,14 @@ struct Contact {
   Vec2 normal = Vec2::UnitY();        // n, world, unit, body 1 → body 2
   double separation = 0.0;            // C of eq. 4-1, in m; −depth when penetrating
   double drift = 0.0;                 // |(p2 − p1) − C n|, how far the anchors slid apart, in m
-  bool fresh = false;                 // found by this step's narrow phase; else re-placed from cache
+  ContactOrigin origin = ContactOrigin::fresh;  // how this step got it (above)
 
   // Where its rows sit in this step's MLCP, recorded when they are written (the row map):
   int row = -1;                              // its contact row (eq. 4-3)
   std::array<int, 2> friction_rows{-1, -1};  // its friction rows along u1 = z × n and u2 = z; −1: none
+
+  // Found by this step's narrow phase (new or re-found); else re-placed from the cache (kept).
+  bool fresh() const { return origin != ContactOrigin::kept; }
 };
 
 // The contacts of one pair of bodies: at most two in the plane (see ContactCache).

@@ -30,7 +30,7 @@ void refresh(ContactPair& pair, const std::vector<Pose2>& poses, const std::vect
   for (int k = 0; k < pair.count; ++k) {
     Contact c = pair.contacts[k];
     place(c, pose1, pose2);
-    c.fresh = false;
+    c.origin = ContactOrigin::kept;
     if (settings.reanchor && c.drift > settings.drift_limit) {
       reanchor(c, pose1, pose2);
       const int ref_body = c.reference == 0 ? pair.bodies.first : pair.bodies.second;
@@ -62,6 +62,7 @@ void merge(ContactPair& pair, Contact fresh, const CacheSettings& settings) {
   if (same_point) {
     fresh.lambda_normal = pair.contacts[nearest].lambda_normal;
     fresh.lambda_tangent = pair.contacts[nearest].lambda_tangent;
+    fresh.origin = ContactOrigin::refound;
     pair.contacts[nearest] = fresh;
   } else if (pair.count < pair.capacity) {
     pair.contacts[pair.count++] = fresh;

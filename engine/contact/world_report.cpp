@@ -8,7 +8,7 @@ std::vector<ContactInfo> contact_infos(const std::vector<ContactPair>& pairs) {
     for (int k = 0; k < pair.count; ++k) {
       const Contact& c = pair.contacts[k];
       infos.push_back(ContactInfo{pair.bodies, lift(c.point), lift(c.normal), c.separation,
-                                  !c.fresh, c.lambda_normal, c.lambda_tangent});
+                                  !c.fresh(), c.lambda_normal, c.lambda_tangent, c.origin});
     }
   }
   return infos;

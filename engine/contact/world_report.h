@@ -28,6 +28,7 @@ struct ContactInfo {
   bool cached = false;          // re-placed from the cache (false: this step's deepest point)
   double lambda_normal = 0.0;   // λ of its contact row, a force in N (its impulse is λ Δt)
   double lambda_tangent = 0.0;  // λ of its friction row along u1, in N
+  ContactOrigin origin = ContactOrigin::fresh;  // new, re-found or kept (cached ⇔ kept)
 };
 
 struct WorldReport {

@@ -50,7 +50,11 @@ struct Contact {
   double normal_force = 0.0;     // λ of the contact row, in N
   Vec2 tangent = Vec2::UnitX();  // unit tangent u of the friction row
   double friction_force = 0.0;   // λ of the friction row along u, in N
-  bool cached = false;           // true when carried over from the last step (warm start)
+  // Where the point comes from (Fig 4-2..4-5): found this step with no λ from before (new), found
+  // this step where a cached point was and warm-started from it (re-found), or re-placed from
+  // the cache without being found (kept).
+  enum class Origin { fresh, refound, kept };
+  Origin origin = Origin::fresh;
 };
 
 // An arrow from `from` to `to`, with an optional label at its tip.
@@ -130,6 +134,7 @@ struct LegendEntry {
     swatch,
     point,  // a Point3's mark, in the entry's colour
     fresh_contact,
+    refound_contact,
     cached_contact,
     centre
   };

@@ -9,7 +9,7 @@
 namespace lamina::render {
 
 enum class Overlay {
-  contacts,    // contact points: fresh ones as discs, cached ones as diamonds
+  contacts,    // contact points: new ones as discs, kept ones as diamonds, re-found both
   normals,     // contact normals n
   forces,      // contact forces as arrows scaled by λ (normal and friction)
   velocities,  // body velocities v

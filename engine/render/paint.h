@@ -59,6 +59,8 @@ Vec2 corner_position(const Canvas& canvas, Corner corner, const Vec2& size);
 void draw_point(const Canvas& canvas, const Vec2& at, Colour colour);  // a disc in an ink ring
 void draw_fresh_contact(const Canvas& canvas, const Vec2& at);
 void draw_cached_contact(const Canvas& canvas, const Vec2& at);
+// A re-found point: the kept point's diamond with the new point's disc inside it.
+void draw_refound_contact(const Canvas& canvas, const Vec2& at);
 void draw_centre_mark(const Canvas& canvas, const Vec2& at, double angle);
 
 }  // namespace lamina::render

@@ -13,9 +13,9 @@ bool any_moving(const Frame& frame) {
                      [](const Body& b) { return !b.fixed; });
 }
 
-bool any_contact(const Frame& frame, bool cached) {
+bool any_contact(const Frame& frame, Contact::Origin origin) {
   return std::any_of(frame.contacts.begin(), frame.contacts.end(),
-                     [cached](const Contact& k) { return k.cached == cached; });
+                     [origin](const Contact& k) { return k.origin == origin; });
 }
 
 bool any_friction(const Frame& frame) {
@@ -34,10 +34,12 @@ std::vector<LegendEntry> legend_entries(const Frame& frame, const Overlays& on) 
       "velocity v");
   add(on.has(Overlay::centres) && any_moving(frame), Sample::centre, palette::ink,
       "centre of mass x");
-  add(on.has(Overlay::contacts) && any_contact(frame, false), Sample::fresh_contact,
-      layer_colour::fresh_contact, "new contact point");
-  add(on.has(Overlay::contacts) && any_contact(frame, true), Sample::cached_contact,
-      layer_colour::cached_contact, "cached contact (warm start)");
+  add(on.has(Overlay::contacts) && any_contact(frame, Contact::Origin::fresh),
+      Sample::fresh_contact, layer_colour::fresh_contact, "new point (no λ from before)");
+  add(on.has(Overlay::contacts) && any_contact(frame, Contact::Origin::refound),
+      Sample::refound_contact, layer_colour::fresh_contact, "re-found point (warm-started)");
+  add(on.has(Overlay::contacts) && any_contact(frame, Contact::Origin::kept),
+      Sample::cached_contact, layer_colour::cached_contact, "kept point (cache, eq. 5-12)");
   add(on.has(Overlay::normals) && contacts, Sample::arrow, layer_colour::normal,
       "contact normal n");
   add(on.has(Overlay::forces) && contacts, Sample::arrow, layer_colour::normal_force,
@@ -72,6 +74,9 @@ void draw_sample(const Canvas& c, const LegendEntry& e, const Vec2& left, double
       break;
     case Sample::fresh_contact:
       draw_fresh_contact(c, middle);
+      break;
+    case Sample::refound_contact:
+      draw_refound_contact(c, middle);
       break;
     case Sample::cached_contact:
       draw_cached_contact(c, middle);

@@ -36,10 +36,16 @@ void paint_forces(Canvas& c, const Frame& frame) {
 
 void paint_contacts(Canvas& c, const Frame& frame) {
   for (const Contact& k : frame.contacts) {
-    if (k.cached) {
-      draw_cached_contact(c, c.px(k.point));
-    } else {
-      draw_fresh_contact(c, c.px(k.point));
+    switch (k.origin) {
+      case Contact::Origin::fresh:
+        draw_fresh_contact(c, c.px(k.point));
+        break;
+      case Contact::Origin::refound:
+        draw_refound_contact(c, c.px(k.point));
+        break;
+      case Contact::Origin::kept:
+        draw_cached_contact(c, c.px(k.point));
+        break;
     }
   }
 }
@@ -66,6 +72,12 @@ void draw_cached_contact(const Canvas& c, const Vec2& at) {
                                   at - Vec2(0, r)};
   fill_convex(c.mesh, diamond, layer_colour::cached_contact);
   stroke_convex(c.mesh, diamond, 0.6 * c.style.outline, palette::ink);
+}
+
+void draw_refound_contact(const Canvas& c, const Vec2& at) {
+  draw_cached_contact(c, at);
+  fill_ringed_disc(c.mesh, at, 0.75 * c.style.marker, layer_colour::fresh_contact,
+                   0.5 * c.style.outline, palette::ink);
 }
 
 // The centre-of-mass symbol: a dark disc with two opposite white quarters, turning with the body.

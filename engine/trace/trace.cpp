@@ -21,7 +21,8 @@ ContactState contact_state(const Scene& scene, const ContactInfo& c, double dt) 
           unsigned_zero(-c.separation),
           unsigned_zero(c.lambda_normal * dt),  // λ is a force; the impulse over the step is λ Δt
           unsigned_zero(c.lambda_tangent * dt),
-          c.cached};
+          c.cached,
+          origin_name(c.origin)};
 }
 
 }  // namespace

@@ -31,6 +31,7 @@ struct ContactState {
   double normal_impulse = 0.0;        // λ Δt of the contact row, in N·s
   double tangent_impulse = 0.0;       // λ Δt of the friction row along u1 = z × n, in N·s
   bool cached = false;                // re-placed from the cache (false: this step's deepest point)
+  std::string origin = "new";         // "new", "refound" or "kept" (Fig 4-2..4-5): cached ⇔ "kept"
 };
 
 struct TraceStep {

@@ -21,7 +21,7 @@ void append_field(std::string& out, const std::string& name) {
 
 // Appends "step,time,names...,values...[,tail]\n".
 void append_row(std::string& out, const TraceStep& step, std::initializer_list<const std::string*> names,
-                std::initializer_list<double> values, const char* tail = "") {
+                std::initializer_list<double> values, const std::string& tail = "") {
   out += std::to_string(step.step);
   out += ',';
   append_shortest(out, step.time);
@@ -42,7 +42,7 @@ void append_row(std::string& out, const TraceStep& step, std::initializer_list<c
 std::string trace_csv_body_header() { return "step,time,body,x,y,angle,vx,vy,angular_velocity\n"; }
 
 std::string trace_csv_contact_header() {
-  return "step,time,body1,body2,x,y,nx,ny,depth,normal_impulse,tangent_impulse,cached\n";
+  return "step,time,body1,body2,x,y,nx,ny,depth,normal_impulse,tangent_impulse,cached,origin\n";
 }
 
 std::string trace_csv_body_rows(const TraceStep& step) {
@@ -60,7 +60,7 @@ std::string trace_csv_contact_rows(const TraceStep& step) {
     append_row(rows, step, {&c.bodies[0], &c.bodies[1]},
                {c.point[0], c.point[1], c.normal[0], c.normal[1], c.depth, c.normal_impulse,
                 c.tangent_impulse},
-               c.cached ? ",true" : ",false");
+               (c.cached ? ",true," : ",false,") + c.origin);
   }
   return rows;
 }

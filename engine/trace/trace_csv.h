@@ -2,7 +2,7 @@
 // contact per step in a second. Columns as in trace.h; numbers in shortest round-trip form.
 //
 //   step,time,body,x,y,angle,vx,vy,angular_velocity
-//   step,time,body1,body2,x,y,nx,ny,depth,normal_impulse,tangent_impulse,cached
+//   step,time,body1,body2,x,y,nx,ny,depth,normal_impulse,tangent_impulse,cached,origin
 #pragma once
 
 #include <string>

@@ -71,6 +71,7 @@ void write_contact(LineWriter& w, const ContactState& c) {
   w.key("normal_impulse").number(c.normal_impulse);
   w.key("tangent_impulse").number(c.tangent_impulse);
   w.key("cached").raw(c.cached ? "true" : "false");
+  w.key("origin").text(c.origin);
   w.raw("}");
 }
 
@@ -93,8 +94,11 @@ BodyState body_state(const Json& j) {
 }
 
 ContactState contact_state(const Json& j) {
+  const bool cached = j.at("cached");
+  // a trace written before "origin" was: a cached point was kept, any other one is taken as new
+  const std::string origin = j.contains("origin") ? j.at("origin").get<std::string>() : cached ? "kept" : "new";
   return {j.at("bodies"), vec2_of(j.at("point")), vec2_of(j.at("normal")), j.at("depth"),
-          j.at("normal_impulse"), j.at("tangent_impulse"), j.at("cached")};
+          j.at("normal_impulse"), j.at("tangent_impulse"), cached, origin};
 }
 
 }  // namespace

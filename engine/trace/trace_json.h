@@ -5,7 +5,7 @@
 //    "bodies":[{"name":"box","position":[0.0,1.99],"angle":0.3,"velocity":[0.0,-0.16],
 //               "angular_velocity":0.0}],
 //    "contacts":[{"bodies":["ground","box"],"point":[0.1,0.0],"normal":[0.0,1.0],"depth":0.001,
-//                 "normal_impulse":0.08,"tangent_impulse":0.0,"cached":true}]}
+//                 "normal_impulse":0.08,"tangent_impulse":0.0,"cached":true,"origin":"kept"}]}
 #pragma once
 
 #include <string>

@@ -114,7 +114,9 @@ render::Panel DropRun::panel(render::Corner corner, render::Colour colour) const
              "penetration = " + fixed(1000.0 * penetration(box), 1) + " mm"};
   double total = 0.0, friction = 0.0;
   for (const ContactInfo& c : contacts) {
-    p.lines.push_back(corner_name(c) + (c.cached ? " cached" : " fresh ") + "  C = " +
+    std::string origin = origin_name(c.origin);
+    origin.resize(7, ' ');  // "new", "refound", "kept", in one column
+    p.lines.push_back(corner_name(c) + " " + origin + " C = " +
                       fixed(c.separation, 4) + " m  λ_n = " + fixed(c.lambda_normal, 1) +
                       " N  λ_t = " + fixed(c.lambda_tangent, 1) + " N");
     total += c.lambda_normal;
@@ -162,10 +164,10 @@ std::string DropRun::moment() const {
              corner_name(contacts.front());
     case view::Fig4Moment::two_points:
       for (const ContactInfo& fresh : contacts) {
-        for (const ContactInfo& cached : contacts) {
-          if (!fresh.cached && cached.cached) {
-            return "Fig 4-4 · corner " + corner_name(fresh) + " goes in while " +
-                   corner_name(cached) + " is cached: both push, solved together";
+        for (const ContactInfo& kept : contacts) {
+          if (fresh.origin == ContactOrigin::fresh && kept.origin == ContactOrigin::kept) {
+            return "Fig 4-4 · corner " + corner_name(fresh) + " goes in, new, while " +
+                   corner_name(kept) + " is kept by the cache: both push, solved together";
           }
         }
       }

@@ -78,8 +78,12 @@ Section fixed_body(const std::string& name, const RigidBody& b) {
 
 Section contact_section(int index, const ContactPair& pair, const Contact& c,
                         const std::vector<std::string>& names, double dt) {
-  const std::string origin = c.fresh ? "this step's deepest point (Fig 4-2)"
-                                     : "kept by the cache, re-placed from its anchors (eq. 5-12, Fig 4-4)";
+  const std::string origin =
+      c.origin == ContactOrigin::fresh
+          ? "new: this step's deepest point, no λ from before (Fig 4-2)"
+      : c.origin == ContactOrigin::refound
+          ? "re-found: this step's deepest point where a cached point was, warm-started from its λ"
+          : "kept by the cache, re-placed from its anchors (eq. 5-12, Fig 4-4)";
   Json rows = Json::array({c.row});
   for (int r : c.friction_rows) {
     if (r >= 0) rows.push_back(r);

@@ -25,7 +25,9 @@ render::Contact contact_view(const ContactInfo& c) {
   view.tangent = Vec2(-c.normal.y(), c.normal.x());
   view.normal_force = c.lambda_normal;
   view.friction_force = c.lambda_tangent;
-  view.cached = c.cached;
+  view.origin = c.origin == ContactOrigin::kept      ? render::Contact::Origin::kept
+                : c.origin == ContactOrigin::refound ? render::Contact::Origin::refound
+                                                     : render::Contact::Origin::fresh;
   return view;
 }
 
