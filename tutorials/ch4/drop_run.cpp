@@ -153,7 +153,7 @@ std::string DropRun::moment() const {
     case view::Fig4Moment::no_contact:
       return touched_ ? "in the air: no contact" : "falling: no contact yet";
     case view::Fig4Moment::first_contact:
-      return "Fig 4-2 · first contact: collision detection gives one point, the deepest corner a";
+      return "Fig 4-2 · first contact: collision detection gives one new point, the deepest corner a";
     case view::Fig4Moment::one_point:
       for (const ContactInfo& c : contacts) {
         if (c.lambda_normal > 0.0) {
@@ -173,7 +173,7 @@ std::string DropRun::moment() const {
       }
       return "Fig 4-4 · both corners push, solved together";
     case view::Fig4Moment::at_rest:
-      return "Fig 4-5 · at rest on two points, together carrying m g";
+      return "Fig 4-5 · at rest on two points, kept or re-found, together carrying m g";
   }
   return "";
 }
