@@ -70,12 +70,10 @@ class SoftStep final : public StepMethod {
     prepare(problem, bodies, lambda, h, contact, against_static, joint);
 
     const std::size_t n = bodies.size();
-    velocity_.resize(n);
     external_.resize(n);
     start_.resize(n);
     moved_.assign(n, Vec6::Zero());
-    for (std::size_t b = 0; b < n; ++b) {
-      velocity_[b] = velocity_of(bodies[b]);
+    for (std::size_t b = 0; b < n; ++b) {  // velocity_ holds V at t already (prepare)
       external_[b] = inverse_mass_times(bodies[b], external_force_of(bodies[b]));  // M⁻¹ F_ext
       start_[b] = Vec3(bodies[b].x.x(), bodies[b].x.y(), planar_angle(bodies[b].q));
       bodies[b].clear_forces();

@@ -131,9 +131,9 @@ void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows) {
     for (size_t i = 0; i < rows.size(); ++i) {
       packed[i] = source[static_cast<std::size_t>(rows[i])];
       if (packed[i].friction_of < 0) continue;
-      // the new index of its first contact row
-      const auto at = std::find(rows.begin(), rows.end(), packed[i].friction_of);
-      assert(at != rows.end());
+      // the new index of its first contact row (rows ascend: a binary search)
+      const auto at = std::lower_bound(rows.begin(), rows.end(), packed[i].friction_of);
+      assert(at != rows.end() && *at == packed[i].friction_of);
       packed[i].friction_of = static_cast<int>(at - rows.begin());
     }
   };

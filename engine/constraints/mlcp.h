@@ -52,9 +52,9 @@ class Mlcp {
                         const std::vector<double>& zeta, double dt);
 
   // Rows of another MLCP as an MLCP of their own, η and all unchanged (an island of it, whose rows
-  // touch no body that other rows touch, is solved apart: eq. 3-24 splits). The bodies keep
-  // their indices; a friction row's contact rows must be among `rows`, after it in no order
-  // but consecutive as they were, and are renumbered.
+  // touch no body that other rows touch, is solved apart: eq. 3-24 splits). `rows` ascend; the
+  // bodies keep their indices; a friction row's contact rows must be among `rows`, consecutive as
+  // they were, and are renumbered.
   void assemble_subset(const Mlcp& from, const std::vector<int>& rows);
 
   int row_count() const;

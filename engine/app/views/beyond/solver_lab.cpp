@@ -30,22 +30,20 @@ LabMeter::LabMeter(const Scene& scene, const std::string& method, const std::vec
 
 void LabMeter::sample(double time, const std::vector<Pose>& poses, double overlap, double energy) {
   run_.poses.push_back(poses);
-  std::vector<Vec2> centres, start;
-  for (const Pose& p : poses) centres.push_back(p.head<2>());
-  for (const Pose& p : start_) start.push_back(p.head<2>());
   LabSample s;
   s.time = time;
   s.overlap = overlap;
-  for (std::size_t b = 0; b < centres.size(); ++b) {
-    if (moving_[b]) s.sideways = std::max(s.sideways, std::abs(centres[b].x() - start[b].x()));
+  for (std::size_t b = 0; b < poses.size(); ++b) {
+    if (moving_[b]) s.sideways = std::max(s.sideways, std::abs(poses[b].x() - start_[b].x()));
   }
-  s.top = (centres.back() - start.back()).norm();
-  if (rest_ > 0.0) s.stretch = (centres.back() - pin_).norm() / rest_ - 1.0;
+  const Vec2 top = poses.back().head<2>(), top0 = start_.back().head<2>();
+  s.top = (top - top0).norm();
+  if (rest_ > 0.0) s.stretch = (top - pin_).norm() / rest_ - 1.0;
   s.energy = energy;
   run_.deepest = std::max(run_.deepest, s.overlap);
   run_.sideways = std::max(run_.sideways, s.sideways);
-  run_.top_sway = std::max(run_.top_sway, std::abs(centres.back().x() - start.back().x()));
-  run_.top_rise = centres.back().y() - start.back().y();
+  run_.top_sway = std::max(run_.top_sway, std::abs(top.x() - top0.x()));
+  run_.top_rise = top.y() - top0.y();
   run_.stretch = std::max(run_.stretch, s.stretch);
   run_.samples.push_back(s);
 }
