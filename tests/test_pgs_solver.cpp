@@ -234,6 +234,31 @@ TEST_SUITE("PgsSolver") {
     CHECK((text_solver.velocity_change(0) - text_a0).norm() <= 1e-12 * text_a0.norm());
   }
 
+  TEST_CASE("the record of λ after each sweep is what that many sweeps give, and changes nothing") {
+    // the viewer's ↑/↓ show these records: sweep s must be PGS stopped after s sweeps from the
+    // same λ_exp (an independent solve per s), bit for bit; recording must not change the answer
+    std::vector<RigidBody> bodies;
+    const ConstraintList joints = straight_chain(bodies, 4, -M_PI / 2 + 0.3);
+    ConstrainedStepSettings settings;
+    WarmStart warm_start;
+    StepReport report;
+    for (int step = 0; step < 5; ++step) constrained_step(bodies, joints, settings, warm_start, &report);
+    const Eigen::VectorXd start = report.lambda_exp;
+    const SweepResult recorded = solve_pgs(report.mlcp, start, {10, 0.0, true});
+    REQUIRE(recorded.lambdas.size() == 10);
+    REQUIRE(recorded.residuals.size() == 10);
+    for (int s = 1; s <= 10; ++s) {
+      CAPTURE(s);
+      const SweepResult stopped = solve_pgs(report.mlcp, start, {s, 0.0, false});
+      CHECK(stopped.lambdas.empty());  // nothing kept unless asked
+      CHECK((recorded.lambdas[static_cast<std::size_t>(s - 1)] - stopped.lambda).cwiseAbs().maxCoeff() == 0.0);
+      CHECK(recorded.residuals[static_cast<std::size_t>(s - 1)] == report.mlcp.residual(stopped.lambda.data()));
+    }
+    CHECK((recorded.lambda - solve_pgs(report.mlcp, start, {10, 0.0, false}).lambda).cwiseAbs().maxCoeff() == 0.0);
+    // the sweeps change λ (else the record would prove nothing)
+    CHECK((recorded.lambdas[0] - recorded.lambdas[9]).norm() > 0.0);
+  }
+
   TEST_CASE("warm starting from last step's λ needs fewer sweeps on a swinging chain") {
     // a chain of 4 links released straight, 0.3 rad from hanging down, swinging for 1 s
     std::vector<RigidBody> bodies;

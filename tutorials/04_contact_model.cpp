@@ -56,6 +56,7 @@ class Landing : public tutorial::Scene {
   }
 
   tutorial::Explanation explain() const override { return run_.explain(); }
+  void record(tutorial::ViewerStep& step) const override { step = run_.viewer_step(); }
 
  private:
   render::Colour colour() const {

@@ -121,6 +121,9 @@ class Walkthrough : public tutorial::Scene {
   tutorial::Explanation explain() const override {
     return view::explain_world_step(run_.world(), run_.report(), {"box A", "ground B"});
   }
+  void record(tutorial::ViewerStep& step) const override {
+    step = view::viewer_step(run_.world(), run_.report(), {"box A", "ground B"});
+  }
 
   // normal_force.png: Σ λ over 2 s against m g.
   void write_data(const std::filesystem::path& folder) const override {

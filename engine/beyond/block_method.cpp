@@ -83,6 +83,8 @@ class BlockMethod final : public StepMethod {
     if (report != nullptr) {
       record = [&](int, const double* l) {
         report->velocity.solution.residuals.push_back(mlcp.residual(l));
+        report->velocity.solution.lambdas.push_back(
+            Eigen::Map<const Eigen::VectorXd>(l, mlcp.row_count()));
       };
     }
     block_sweeps(mlcp, lambda.data(), problem.settings.step.iterations, record);

@@ -15,9 +15,12 @@ SweepResult gauss_seidel(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
     // λ_i += (b_i − Σ_j A_ij λ_j) / A_ii, the text's GaussSeidel
     for (Eigen::Index i = 0; i < b.size(); ++i) lambda[i] += (b[i] - A.row(i).dot(lambda)) / A(i, i);
     ++result.iterations;
-    if (!settings.record_residuals && settings.tolerance <= 0.0) continue;
+    if (!settings.record_sweeps && settings.tolerance <= 0.0) continue;
     const double residual = (A * lambda - b).norm();
-    if (settings.record_residuals) result.residuals.push_back(residual);
+    if (settings.record_sweeps) {
+      result.residuals.push_back(residual);
+      result.lambdas.push_back(lambda);
+    }
     if (settings.tolerance > 0.0 && residual <= settings.tolerance) break;
   }
   return result;

@@ -18,7 +18,7 @@
 namespace lamina {
 
 // Solves A λ = b from λ_exp. settings.iterations caps the sweeps; settings.tolerance (if > 0)
-// stops once ‖A λ − b‖ ≤ tolerance; record_residuals keeps ‖A λ − b‖ after every sweep.
+// stops once ‖A λ − b‖ ≤ tolerance; record_sweeps keeps ‖A λ − b‖ (and λ) after every sweep.
 SweepResult gauss_seidel(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
                          const Eigen::VectorXd& lambda_exp, const SweepSettings& settings);
 

@@ -52,7 +52,7 @@ std::vector<Block<6>>& PgsSolver::a<6>() { return general_a_; }
 
 void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& settings,
                       SweepResult& result, Pitfalls pitfalls) {
-  const bool measure = settings.record_residuals || settings.tolerance > 0.0;
+  const bool measure = settings.record_sweeps || settings.tolerance > 0.0;
   mlcp.visit([&](const auto& rows) {
     constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
     planar_ = N == 3;
@@ -73,7 +73,10 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
       result.iterations = iter + 1;
       if (!measure) continue;
       const double r = mlcp.residual(lambda);
-      if (settings.record_residuals) result.residuals.push_back(r);
+      if (settings.record_sweeps) {
+        result.residuals.push_back(r);
+        result.lambdas.push_back(Eigen::Map<const Eigen::VectorXd>(lambda, mlcp.row_count()));
+      }
       if (settings.tolerance > 0.0 && r <= settings.tolerance) break;
     }
   });

@@ -49,10 +49,10 @@ void pgs_row(const PackedRow<N>& row, std::size_t i, double* lambda, Block<N>& a
 class PgsSolver {
  public:
   // Up to settings.iterations sweeps on λ in place (λ holds λ_exp on entry). After each sweep,
-  // when residuals are recorded or a tolerance is set, measures mlcp.residual(λ), records it if
+  // when sweeps are recorded or a tolerance is set, measures mlcp.residual(λ), records it and λ if
   // asked and stops once it is ≤ a tolerance > 0. Recording alone never changes the sweeps run,
-  // so λ is the same bit for bit with or without it. result.iterations and result.residuals are
-  // filled; result.lambda is left alone.
+  // so λ is the same bit for bit with or without it. result.iterations, result.residuals and
+  // result.lambdas are filled; result.lambda is left alone.
   // Of the pitfalls (motion/pitfalls.h), lambda-b1 and clamp-increment are read here.
   void solve(const Mlcp& mlcp, double* lambda, const SweepSettings& settings, SweepResult& result,
              Pitfalls pitfalls = {});

@@ -211,8 +211,10 @@ void World::take_method_step(WorldReport* report) {
   if (report != nullptr) {
     report->velocity.solution.lambda = Eigen::Map<const Eigen::VectorXd>(
         lambda_.data(), static_cast<Eigen::Index>(lambda_.size()));
-    report->velocity.solution.iterations =
-        static_cast<int>(report->velocity.solution.residuals.size());
+    SweepResult& solution = report->velocity.solution;
+    solution.iterations = static_cast<int>(solution.residuals.size());
+    // a method that records only its answer (one residual) has that answer as its one pass
+    if (solution.lambdas.size() < solution.residuals.size()) solution.lambdas.assign(1, solution.lambda);
   }
   remember_lambdas(report);
 }

@@ -1,5 +1,5 @@
 #!/bin/sh
-# interrupt.sh <lamina> <folder> <INT|TERM> <trace|frames|recording|twice>
+# interrupt.sh <lamina> <folder> <INT|TERM> <trace|frames|recording|twice|viewer|viewer-frames>
 # Starts a long `lamina run` writing into <folder>, sends it the signal once it has written
 # something (recording: while it simulates the run whose frames it records, before it renders
 # any; frames: while it renders them; twice: just after a step, then again once lamina has taken
@@ -11,12 +11,16 @@
 #     DIR" (frames);
 #   - the trace holds steps 0..N-1, every line whole; the M frames are complete PNGs, ending
 #     with their IEND chunk; nothing else and no temporary file is left;
+#   - viewer (while it simulates a run it records for --viewer) and viewer-frames (while it
+#     writes the viewer's frames): ", no viewer page" after the trace, and the viewer's folder
+#     holds nothing but, for viewer-frames, an empty frames/ (the frames written are removed);
 #   - twice: lamina dies by the second signal in the middle of the step the first one waits for
 #     (exit code 128 + the signal, as above), says nothing, and leaves nothing: no trace, since
 #     the run never finished it, and no temporary file, which the second signal removes.
 lamina=$1 folder=$2 signal=$3 mode=$4
 trace=$folder/trace.jsonl
 frames=$folder/frames
+viewer=$folder/viewer
 every=3
 
 fail() {
@@ -91,7 +95,15 @@ case $mode in
     scene=pyramid:30
     set -- run $scene --iterations 10000 --steps 100000 --trace "$trace"
     written=$trace.tmp ;;
-  *) fail "mode must be trace, frames, recording or twice" ;;
+  viewer)  # 55 boxes at 10000 sweeps a step, each step recorded for the viewer
+    scene=pyramid:10
+    set -- run $scene --iterations 10000 --steps 100000 --trace "$trace" --viewer "$viewer"
+    written=$trace.tmp ;;
+  viewer-frames)  # 3000 steps simulated and recorded in ~1 s, then a frame per step
+    scene=box-on-ground
+    set -- run $scene --steps 3000 --trace "$trace" --viewer "$viewer" --size 160x90
+    written=$viewer/frames/0-${scene}_0001.png ;;
+  *) fail "mode must be trace, frames, recording, twice, viewer or viewer-frames" ;;
 esac
 
 rm -rf "$folder" && mkdir -p "$folder" || fail "cannot make $folder"
@@ -140,6 +152,9 @@ case $mode in
   trace) expected="lamina: $scene: $what after $steps $noun; trace -> $trace holds $held" ;;
   recording)
     expected="lamina: $scene: $what after $steps $noun; trace -> $trace holds $held, no frames (stopped before rendering)" ;;
+  viewer) expected="lamina: $scene: $what after $steps $noun; trace -> $trace holds $held, no viewer page" ;;
+  viewer-frames)
+    expected="lamina: $scene: $what after $steps $noun, while writing the viewer; trace -> $trace holds $held, no viewer page" ;;
   frames)
     count=$(echo "$stderr" | sed -n "s/.* while rendering frame \([0-9][0-9]*\);.*/\1/p")
     [ -n "$count" ] && [ "$count" -ge 1 ] || fail "stderr does not name a frame after the first: $stderr"
@@ -159,8 +174,13 @@ awk -v q='"' 'index($0, "{" q "step" q ":" (NR - 1) ",") != 1 || !/}$/ { print "
 # Nothing else in the folder; the frames, complete.
 for file in "$folder"/* "$folder"/.[!.]*; do
   [ -e "$file" ] || continue
-  [ "$file" = "$trace" ] || [ "$file" = "$frames" ] || fail "left behind: $file"
+  [ "$file" = "$trace" ] || [ "$file" = "$frames" ] || [ "$file" = "$viewer" ] || fail "left behind: $file"
 done
+if [ -e "$viewer" ]; then
+  rmdir "$viewer/frames" 2>/dev/null
+  left=$(ls -A "$viewer")
+  [ -z "$left" ] || fail "the viewer's folder holds: $left"
+fi
 if [ "$mode" = frames ]; then
   files=$(ls -A "$frames" | wc -l)
   [ "$files" -eq "$count" ] || fail "$files files in $frames, not $count frames"

@@ -182,4 +182,8 @@ tutorial::Explanation DropRun::explain() const {
   return view::explain_world_step(run_.world(), run_.report(), drop_names);
 }
 
+tutorial::ViewerStep DropRun::viewer_step() const {
+  return view::viewer_step(run_.world(), run_.report(), drop_names);
+}
+
 }  // namespace lamina::ch4

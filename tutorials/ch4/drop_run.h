@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/harness/explanation.h"
+#include "app/harness/viewer.h"
 #include "app/views/contact/contact_story.h"
 #include "app/views/contact/stepped_world.h"
 #include "render/frame.h"
@@ -40,6 +41,8 @@ class DropRun {
   view::Fig4Moment fig4() const { return moment_; }
   // What step k solved (views/contact/world_explanation.h).
   tutorial::Explanation explain() const;
+  // The same step for the step-through viewer.
+  tutorial::ViewerStep viewer_step() const;
 
   const std::string& solver() const { return solver_; }
   bool cache() const { return cache_; }

@@ -73,12 +73,24 @@ void add_run_options(CLI::App& run, RunOptions& o, std::string& explain_format) 
                      ->type_name("DIR");
   run.add_option("--every", o.every, "steps between frames")->type_name("K")->capture_default_str()
       ->check(CLI::PositiveNumber)->needs(frames);
-  for (CLI::Option* option : tutorial::add_render_options(run, o.render)) option->needs(frames);
+  auto* viewer = tutorial::add_viewer_options(
+      run, o.viewer, o.viewer_steps,
+      "write the step-through viewer into DIR: DIR/index.html shows every step, its phases, rows "
+      "and sweeps, in a browser, from the file system (docs/viewer.md)");
+  const std::vector<CLI::Option*> render_options = tutorial::add_render_options(run, o.render);
+  // the frames' options shape the viewer's frames too: each needs one or the other
+  run.callback([frames, viewer, render_options] {
+    for (const CLI::Option* option : render_options) {
+      if (option->count() > 0 && frames->count() == 0 && viewer->count() == 0) {
+        throw CLI::ValidationError(option->get_name() + " needs --frames or --viewer");
+      }
+    }
+  });
   auto* explain = add_optional(run, "--explain", o.explain, "print what the engine computed in "
                                "step STEP (from t = STEP Δt to t + Δt), with equation numbers, "
                                "and stop; writes no file")
                       ->type_name("STEP")->check(range_of(scene_limits::steps))
-                      ->excludes(trace)->excludes(frames);
+                      ->excludes(trace)->excludes(frames)->excludes(viewer);
   run.add_option("--explain-format", explain_format, "text or json")
       ->type_name("FORMAT")->capture_default_str()->check(CLI::IsMember({"text", "json"}))->needs(explain);
 }

@@ -1,6 +1,5 @@
 #include "app/cli/run_command.h"
 
-#include <cctype>
 #include <iostream>
 #include <memory>
 
@@ -10,6 +9,7 @@
 #include "app/cli/signals.h"
 #include "app/cli/simulation.h"
 #include "app/harness/format.h"
+#include "app/harness/viewer.h"
 #include "app/views/contact/world_explanation.h"
 #include "motion/pitfalls.h"
 #include "scene/scene_world.h"
@@ -44,30 +44,67 @@ void explain_step(Simulation& simulation, long k, bool json) {
   }
 }
 
-// The file name prefix of the scene's frames: anything but letters, digits, '.', '_' and '-'
-// becomes '-' ("pyramid:5" → "pyramid-5"); an empty name is "scene".
-std::string file_prefix(const std::string& name) {
-  std::string prefix = name;
-  for (char& c : prefix) {
-    const bool plain = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
-    if (!plain) c = '-';
-  }
-  return prefix.empty() ? "scene" : prefix;
-}
+// The step-through viewer of a run (--viewer): its folder made before the first step, every
+// step's record and frame, written as a page when the run is over.
+struct ViewerRecording {
+  tutorial::ViewerPage page;
+  tutorial::ViewerRun run;
+  FrameRecording frames;  // every step's frame, and the region they show
 
-// The steps of the run, each recorded in the trace and, every `every` steps, as a frame.
-void simulate(Simulation& simulation, long steps, FrameRecording* recording) {
+  ViewerRecording(const RunOptions& o, const Simulation& simulation, std::string caption)
+      : page([&] {
+          tutorial::RenderRequest request = o.render;
+          request.out = *o.viewer;
+          return request;
+        }()),
+        run("lamina", simulation.scene().name, simulation.world().settings().step.dt,
+            tutorial::ViewerLimits{o.viewer_steps}),
+        frames(simulation.world(), 1, std::move(caption)) {}
+};
+
+// The steps of the run, each recorded in the trace, every `every` steps as a frame, and in the
+// viewer with what it solved.
+void simulate(Simulation& simulation, long steps, FrameRecording* recording, ViewerRecording* viewer) {
+  const std::vector<std::string> names = simulation.body_names();
+  WorldReport report;
   while (simulation.steps_taken() < steps) {
     const long k = simulation.steps_taken();
-    if (recording != nullptr && recording->draws(k)) {
-      const std::vector<RigidBody> at_t = simulation.world().bodies();
-      simulation.step();
-      recording->record(k, simulation.world(), at_t);
-    } else {
-      simulation.step();
-    }
+    const bool draws = recording != nullptr && recording->draws(k);
+    std::vector<RigidBody> at_t;
+    if (draws || viewer != nullptr) at_t = simulation.world().bodies();
+    simulation.step(viewer != nullptr ? &report : nullptr);
+    if (draws) recording->record(k, simulation.world(), at_t);
     if (recording != nullptr) recording->sweep(simulation.world());
+    if (viewer != nullptr) {
+      viewer->frames.record(k, simulation.world(), at_t);
+      viewer->frames.sweep(simulation.world());
+      viewer->run.add(view::viewer_step(simulation.world(), report, names),
+                      viewer->frames.frames().back().frame);
+    }
   }
+}
+
+// Writes the viewer's page of the steps taken; SIGINT or SIGTERM stops it between two frames,
+// leaving no page. Returns what it kept, e.g. "viewer -> out/index.html (rows and sweeps of
+// steps 0..599)".
+std::string write_viewer(ViewerRecording& viewer, const Simulation& simulation, const RunOptions& o) {
+  viewer.run.fit(viewer.frames.view(simulation.world()));
+  viewer.page.write({viewer.run}, [&] {
+    if (const int signal = stop_signal()) {
+      throw stopped_by(signal, simulation.origin(),
+                       "after " + tutorial::counted(simulation.steps_taken(), "step", "steps") +
+                           ", while writing the viewer");
+    }
+  });
+  const std::optional<std::array<long, 2>> detailed = viewer.run.detailed();
+  std::string kept = "viewer -> " + (*o.viewer / "index.html").string() + " (";
+  kept += detailed ? "rows and sweeps of steps " + std::to_string((*detailed)[0]) + ".." +
+                         std::to_string((*detailed)[1])
+                   : std::string("no step's rows and sweeps");
+  if (detailed && (*detailed)[1] + 1 < viewer.run.steps() && !o.viewer_steps) {
+    kept += "; choose others with --viewer-steps A:B";
+  }
+  return kept + ")";
 }
 
 // The renderer of --frames: its folder made and an OpenGL context open before the first step,
@@ -86,7 +123,7 @@ void render_recording(const Simulation& simulation, const FrameRecording& record
   std::size_t next = 0;
   rendered = 0;
   try {
-    renderer.render(file_prefix(simulation.scene().name), recording.view(simulation.world()),
+    renderer.render(tutorial::file_prefix(simulation.scene().name), recording.view(simulation.world()),
                     simulation.world().settings().step.dt, [&](render::Frame& frame, long& step) {
                       if (next == recording.frames().size()) return false;
                       if (const int signal = stop_signal()) {
@@ -126,21 +163,24 @@ std::string frames_kept(int count, const RunOptions& o) {
 }
 
 void print_summary(const Simulation& simulation, const std::optional<TraceWriter>& trace,
-                   const RunOptions& o, int frames) {
+                   const RunOptions& o, int frames, const std::string& viewer) {
   std::cout << simulation.scene().name << ": " << tutorial::counted(simulation.steps_taken(), "step", "steps") << ", t = "
             << simulation.world().time() << " s";
   if (trace) std::cout << ", trace -> " << listed(trace->paths());
   if (o.frames) std::cout << ", " << frames_kept(frames, o);
+  if (!viewer.empty()) std::cout << ", " << viewer;
   std::cout << '\n';
 }
 
 // What a run that stopped keeps, complete: "; trace -> t.jsonl holds steps 0..411, 103 frames
 // -> out".
 std::string kept_outputs(const Simulation& simulation, const RunOptions& o,
-                         const std::optional<TraceWriter>& trace, const std::string& frames) {
+                         const std::optional<TraceWriter>& trace, const std::string& frames,
+                         const std::string& viewer = "no viewer page") {
   std::string kept;
   if (trace) kept += "; trace -> " + listed(trace->paths()) + " holds " + step_span(simulation.steps_taken());
-  if (o.frames) kept += (trace ? ", " : "; ") + frames;
+  if (o.frames) kept += (kept.empty() ? "; " : ", ") + frames;
+  if (o.viewer) kept += (kept.empty() ? "; " : ", ") + viewer;
   return kept;
 }
 
@@ -160,30 +200,35 @@ void run_scene(Scene scene, const RunOptions& o) {
   std::optional<FrameRecording> recording;
   const std::string& description = simulation.scene().description;
   const std::string& name = simulation.scene().name;
-  if (o.frames) {
-    std::string solver = "solver: " + simulation.world().settings().solver;
-    for (const PitfallInfo& p : pitfall_list()) {
-      if (simulation.world().settings().step.pitfalls.has(p.pitfall)) solver += " · pitfall: " + p.name;
-    }
-    recording.emplace(simulation.world(), o.every,
-                      (description.empty() ? name : name + " · " + description) + " · " + solver);
+  std::string solver = "solver: " + simulation.world().settings().solver;
+  for (const PitfallInfo& p : pitfall_list()) {
+    if (simulation.world().settings().step.pitfalls.has(p.pitfall)) solver += " · pitfall: " + p.name;
   }
-  const long frame_count = o.frames ? (steps + o.every - 1) / o.every : 0;
+  const std::string caption = (description.empty() ? name : name + " · " + description) + " · " + solver;
+  if (o.frames) recording.emplace(simulation.world(), o.every, caption);
+  std::optional<ViewerRecording> viewer;
+  if (o.viewer) viewer.emplace(o, simulation, caption);
+  const long frame_count = (o.frames ? (steps + o.every - 1) / o.every : 0) + (o.viewer ? steps : 0);
   ProgressBar progress(name, steps + frame_count);
   simulation.show_progress(progress);
   int frames = 0;
   try {
-    simulate(simulation, steps, recording ? &*recording : nullptr);
+    simulate(simulation, steps, recording ? &*recording : nullptr, viewer ? &*viewer : nullptr);
   } catch (const RunStopped& stopped) {
     if (trace) trace->finish();  // the steps before the stop, complete
     std::string kept_frames = "no frames (stopped before rendering)";
-    // A run that diverged keeps the frames of the steps before; a signal asked to stop now.
-    if (recording && stopped.exit_code() == exit_diverged) {
-      render_recording(simulation, *recording, *renderer, progress, frames);
-      kept_frames = frames_kept(frames, o);
+    std::string kept_viewer = "no viewer page";
+    // A run that diverged keeps the frames and the viewer of the steps before; a signal asked to
+    // stop now.
+    if (stopped.exit_code() == exit_diverged) {
+      if (recording) {
+        render_recording(simulation, *recording, *renderer, progress, frames);
+        kept_frames = frames_kept(frames, o);
+      }
+      if (viewer && viewer->run.steps() > 0) kept_viewer = write_viewer(*viewer, simulation, o);
     }
     progress.finish();
-    throw RunStopped(stopped.what() + kept_outputs(simulation, o, trace, kept_frames),
+    throw RunStopped(stopped.what() + kept_outputs(simulation, o, trace, kept_frames, kept_viewer),
                      stopped.exit_code());
   }
   if (trace) trace->finish();
@@ -196,8 +241,18 @@ void run_scene(Scene scene, const RunOptions& o) {
                        stopped.exit_code());
     }
   }
+  std::string kept_viewer;
+  if (viewer) {
+    try {
+      kept_viewer = write_viewer(*viewer, simulation, o);
+    } catch (const RunStopped& stopped) {
+      progress.finish();
+      throw RunStopped(stopped.what() + kept_outputs(simulation, o, trace, frames_kept(frames, o)),
+                       stopped.exit_code());
+    }
+  }
   progress.finish();
-  print_summary(simulation, trace, o, frames);
+  print_summary(simulation, trace, o, frames, kept_viewer);
 }
 
 }  // namespace lamina::cli

@@ -3,6 +3,7 @@
 // state at t with what step k solved, and --explain k explains it.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -27,6 +28,8 @@ struct RunOptions {
   int every = 1;                                // --every K: steps between frames
   tutorial::RenderRequest render{{}, {1280, 720}, render::Overlays{render::Overlay::contacts}};
                                                 // --size, --overlay, --backend (out: --frames)
+  std::optional<std::filesystem::path> viewer;  // --viewer DIR
+  std::optional<std::array<long, 2>> viewer_steps;  // --viewer-steps A:B
   std::optional<long> explain;                  // --explain STEP
   bool explain_json = false;                    // --explain-format json
 };

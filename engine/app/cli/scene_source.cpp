@@ -8,10 +8,13 @@
 namespace lamina::cli {
 namespace {
 
+// A file that is there, or a name that looks like one; a folder that happens to share a built-in
+// scene's name (an output folder in the current directory) does not hide the built-in.
 bool names_a_file(const std::string& source) {
   const std::filesystem::path path(source);
-  return std::filesystem::exists(path) || path.extension() == ".json" ||
-         source.find('/') != std::string::npos;
+  std::error_code ignored;
+  return (std::filesystem::exists(path, ignored) && !std::filesystem::is_directory(path, ignored)) ||
+         path.extension() == ".json" || source.find('/') != std::string::npos;
 }
 
 }  // namespace

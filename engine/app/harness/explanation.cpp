@@ -89,7 +89,9 @@ Json to_json(const StepContext& c, const Explanation& explanation) {
                             {"value", q.value},
                             {"unit", q.unit}});
     }
-    sections.push_back({{"title", s.title}, {"quantities", quantities}});
+    Json section = {{"title", s.title}, {"quantities", quantities}};
+    if (!s.phase.empty()) section["phase"] = s.phase;
+    sections.push_back(std::move(section));
   }
   return {{"program", c.program}, {"scene", c.scene},    {"step", c.step}, {"t", c.time},
           {"dt", c.time_step},    {"sections", sections}};

@@ -24,7 +24,13 @@ struct Quantity {
 struct Section {
   std::string title;
   std::vector<Quantity> quantities;
+  std::string phase = {};  // a World step's phase it belongs to (phase_names), empty elsewhere
 };
+
+// The phases of World::step in its order (chapter 5's walk-through), as explanations tag their
+// sections and the step-through viewer groups them.
+inline constexpr const char* phase_names[] = {"forces", "collision", "cache", "rows",
+                                              "solve",  "Jᵀλ",       "integration"};
 
 using Explanation = std::vector<Section>;
 

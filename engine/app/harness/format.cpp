@@ -1,5 +1,6 @@
 #include "app/harness/format.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -37,6 +38,15 @@ std::vector<std::string> fixed_rows(const Mat3& m, int decimals) {
 
 std::string counted(long count, const std::string& one, const std::string& many) {
   return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
+std::string file_prefix(const std::string& name) {
+  std::string prefix = name;
+  for (char& c : prefix) {
+    const bool plain = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
+    if (!plain) c = '-';
+  }
+  return prefix.empty() ? "scene" : prefix;
 }
 
 }  // namespace lamina::tutorial

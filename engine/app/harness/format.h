@@ -18,5 +18,8 @@ std::string fixed(const Vec3& v, int decimals = 3);
 std::vector<std::string> fixed_rows(const Mat3& m, int decimals = 3);
 // "1 step", "3 steps": a count and its noun, singular or plural.
 std::string counted(long count, const std::string& one, const std::string& many);
+// A name as a file name prefix: anything but letters, digits, '.', '_' and '-' becomes '-'
+// ("pyramid:5" → "pyramid-5"); an empty name is "scene".
+std::string file_prefix(const std::string& name);
 
 }  // namespace lamina::tutorial

@@ -32,6 +32,11 @@ ParsedOptions parse_options(int argc, char** argv, const TutorialInfo& info) {
                "print every step in turn (Enter for the next, "
                "q to stop); renders nothing")
       ->excludes(explain_option);
+  add_viewer_options(app, o.viewer, o.viewer_steps,
+                     "write the step-through viewer of every scene into DIR: DIR/index.html, every "
+                     "step of the frames' span with its phases, rows and sweeps (docs/viewer.md); "
+                     "renders no frame sequence")
+      ->excludes(explain_option);
   if (info.has_cache) app.add_flag("--no-cache", o.no_cache, "solve without the contact cache");
   if (!info.solvers.empty()) {
     app.add_option_function<std::string>(

@@ -1,6 +1,7 @@
 // The options every chapter tutorial takes (CLI11).
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -31,6 +32,8 @@ struct Options {
   bool step_through = false;         // --step-through: print every step, render nothing
   bool no_cache = false;             // --no-cache (only where has_cache)
   std::optional<std::string> solver; // --solver NAME (only where solvers are offered)
+  std::optional<std::filesystem::path> viewer;      // --viewer DIR: the step-through page
+  std::optional<std::array<long, 2>> viewer_steps;  // --viewer-steps A:B
 };
 
 // The parsed options, or the exit code when parsing ended the run (--help, a bad option; CLI11

@@ -2,9 +2,11 @@
 // by the same command-line options, and the one renderer that carries it out.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,11 @@ struct RenderRequest {
 // three options (so that a caller can make them need another, as lamina's need --frames).
 std::vector<CLI::Option*> add_render_options(CLI::App& app, RenderRequest& request);
 
+// Adds --viewer DIR (described by `help`) and --viewer-steps A:B (parse_step_window, viewer.h),
+// parsed straight into `viewer` and `steps`; returns the --viewer option.
+CLI::Option* add_viewer_options(CLI::App& app, std::optional<std::filesystem::path>& viewer,
+                                std::optional<std::array<long, 2>>& steps, const std::string& help);
+
 // "1280x720" → {1280, 720}; throws std::invalid_argument for anything else or a size outside
 // 16..8192 pixels.
 render::FrameSize parse_frame_size(const std::string& text);
@@ -57,6 +64,8 @@ class FrameRenderer {
   int render(const std::string& name, const render::Rect& view, double dt, const NextFrame& next);
   // Waits until every queued frame is written; throws OutputError for the first failure.
   void finish();
+  // The camera render() fits to the world region `view`, for the frames' size and overlays.
+  render::Camera camera(const render::Rect& view) const;
 
  private:
   struct Pipeline;

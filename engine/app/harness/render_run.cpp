@@ -10,6 +10,7 @@
 
 #include "app/harness/render_request.h"
 #include "app/harness/runs.h"
+#include "app/harness/viewer.h"
 #include "output/output_file.h"
 #include "render/frame_writer.h"
 #include "render/renderer.h"
@@ -104,6 +105,21 @@ std::vector<CLI::Option*> add_render_options(CLI::App& app, RenderRequest& reque
   return {size, overlays, backend};
 }
 
+CLI::Option* add_viewer_options(CLI::App& app, std::optional<std::filesystem::path>& viewer,
+                                std::optional<std::array<long, 2>>& steps, const std::string& help) {
+  CLI::Option* folder = app.add_option_function<std::string>(
+                                "--viewer", [&viewer](const std::string& text) { viewer = text; }, help)
+                            ->type_name("DIR");
+  app.add_option_function<std::string>(
+         "--viewer-steps", [&steps](const std::string& text) { steps = parse_step_window(text); },
+         "the steps whose phases, rows and sweeps the viewer keeps, A:B (default: from step 0 "
+         "while they fit in 16 MB)")
+      ->type_name("A:B")
+      ->check(checked_by(parse_step_window, "A:B"))
+      ->needs(folder);
+  return folder;
+}
+
 struct FrameRenderer::Pipeline {
   std::unique_ptr<render::GlContext> context;
   render::Renderer renderer;
@@ -124,9 +140,7 @@ FrameRenderer::~FrameRenderer() = default;
 
 int FrameRenderer::render(const std::string& name, const render::Rect& view, double dt,
                           const NextFrame& next) {
-  const render::Rect area = render::Style::for_size(request_.size)
-                                .drawing_area(request_.size, request_.overlays.has(render::Overlay::axes));
-  const render::Camera camera = render::Camera::fit(view, area);
+  const render::Camera camera = this->camera(view);
   int count = 0;
   render::Frame frame;
   long step = 0;
@@ -139,6 +153,12 @@ int FrameRenderer::render(const std::string& name, const render::Rect& view, dou
 }
 
 void FrameRenderer::finish() { pipeline_->writer.finish(); }
+
+render::Camera FrameRenderer::camera(const render::Rect& view) const {
+  const render::Rect area = render::Style::for_size(request_.size)
+                                .drawing_area(request_.size, request_.overlays.has(render::Overlay::axes));
+  return render::Camera::fit(view, area);
+}
 
 void render_scenes(const TutorialInfo& info, const Options& o,
                    const std::vector<SceneFactory>& scenes) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/harness/explanation.h"
+#include "app/harness/viewer.h"
 #include "render/camera.h"
 #include "render/frame.h"
 
@@ -29,6 +30,9 @@ class Scene {
   virtual void draw(render::Frame& frame) const = 0;
   // What the engine computed in the last step (the initial state before the first).
   virtual Explanation explain() const = 0;
+  // What the last step solved, for the step-through viewer: the bodies, rows, sweeps, contacts
+  // and joints (the harness adds the explanation and the frame). Scenes without them add none.
+  virtual void record(ViewerStep& /*step*/) const {}
   // Writes what the run recorded (CSV data, plots) into `folder` after the last frame.
   virtual void write_data(const std::filesystem::path& /*folder*/) const {}
 };

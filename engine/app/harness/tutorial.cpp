@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/harness/runs.h"
+#include "output/output_file.h"
 
 namespace lamina::tutorial {
 
@@ -15,10 +16,15 @@ int run_tutorial(int argc, char** argv, const TutorialInfo& info,
   try {
     if (options.explain_step || options.step_through) {
       explain_scenes(info, options, scenes);
+    } else if (options.viewer) {
+      view_scenes(info, options, scenes);
     } else {
       render_scenes(info, options, scenes);
     }
     return 0;
+  } catch (const OutputError& e) {
+    std::cerr << info.name << ": " << e.what() << '\n';
+    return 2;  // an output path that cannot be written: the reader's to mend
   } catch (const std::exception& e) {
     std::cerr << info.name << ": " << e.what() << '\n';
     return 1;

@@ -93,4 +93,34 @@ std::vector<std::string> numbered_bodies(std::size_t count) {
   return names;
 }
 
+void add_viewer_rows(const StepReport& report, const std::vector<std::string>& titles,
+                     tutorial::ViewerStep& step) {
+  const Mlcp& mlcp = report.mlcp;
+  const SweepResult& solution = report.solution;
+  const double* lambda = solution.lambda.data();
+  const Eigen::VectorXd slack = report.slack();  // W = J B λ − η, eq. 3-23, once for all rows
+  for (int i = 0; i < mlcp.row_count(); ++i) {
+    const auto r = static_cast<Eigen::Index>(i);
+    tutorial::ViewerRow row;
+    row.kind = mlcp.friction_of(i) >= 0 ? "friction" : "row";
+    row.title = titles.at(static_cast<std::size_t>(i));
+    row.bodies = mlcp.bodies_of(i);
+    for (int k = 0; k < 2; ++k) {
+      const Vec6 j = mlcp.jacobian(i, k);  // [v ω]: the plane's columns are v_x, v_y, ω_z
+      row.J[static_cast<std::size_t>(k)] = {j[0], j[1], j[5]};
+    }
+    row.d = mlcp.d(i);
+    row.eta = mlcp.eta(i);
+    const auto [lo, hi] = mlcp.bounds(i, lambda);
+    row.lower = lo;
+    row.upper = hi;
+    row.lambda_exp = r < report.lambda_exp.size() ? report.lambda_exp[r] : 0.0;
+    row.lambda = lambda[i];
+    row.slack = slack[r];
+    for (const Eigen::VectorXd& after : solution.lambdas) row.sweeps.push_back(after[r]);
+    step.rows.push_back(std::move(row));
+  }
+  step.residuals = solution.residuals;
+}
+
 }  // namespace lamina::view

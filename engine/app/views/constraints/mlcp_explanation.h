@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/harness/explanation.h"
+#include "app/harness/viewer.h"
 #include "constraints/step_report.h"
 #include "motion/rigid_body.h"
 
@@ -39,6 +40,12 @@ Section body_section(const std::string& title, const RigidBody& body, const Stat
 
 // Body b's constraint force F_c = Jᵀ λ, [f_c; τ_c] (eq. 3-11, 5-9).
 Quantity constraint_force(const StepReport& report, int body);
+
+// The rows of the solved MLCP for the step-through viewer, titled by `titles` (one per row; the
+// kind is "friction" for a row bounded by ±μ λc, "row" otherwise, for the caller to refine),
+// with λ after each recorded sweep and the residuals after each.
+void add_viewer_rows(const StepReport& report, const std::vector<std::string>& titles,
+                     tutorial::ViewerStep& step);
 
 // The names of n bodies when they have none of their own: "body 0", "body 1", ...
 std::vector<std::string> numbered_bodies(std::size_t count);

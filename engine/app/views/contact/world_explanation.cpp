@@ -1,5 +1,8 @@
 #include "app/views/contact/world_explanation.h"
 
+#include "app/views/constraints/constraint_view.h"
+#include "app/views/motion/body_view.h"
+
 namespace lamina::view {
 namespace {
 
@@ -113,43 +116,113 @@ Section joint_section(const World& world, int j, const RowRange& rows,
 }  // namespace
 
 Explanation explain_world_step(const World& world, const WorldReport& report,
-                               const std::vector<std::string>& names) {
+                               const std::vector<std::string>& names, bool each_row) {
   const std::vector<RigidBody>& at_t = report.bodies;
   const double dt = world.settings().step.dt;
   Explanation e;
+  // each section tagged with the phase of World::step that computed it
+  auto add = [&e](Section s, const char* phase) {
+    s.phase = phase;
+    e.push_back(std::move(s));
+  };
   for (std::size_t i = 0; i < at_t.size(); ++i) {
-    e.push_back(at_t[i].is_static() ? fixed_body(names.at(i), at_t[i])
-                                    : body_at_t(names.at(i), at_t[i], world.settings().step.gravity));
+    add(at_t[i].is_static() ? fixed_body(names.at(i), at_t[i])
+                            : body_at_t(names.at(i), at_t[i], world.settings().step.gravity),
+        "forces");
   }
   int index = 0;
   for (const ContactPair& pair : report.pairs) {
-    for (int k = 0; k < pair.count; ++k) e.push_back(contact_section(index++, pair, pair.contacts[k], names, dt));
+    for (int k = 0; k < pair.count; ++k) {
+      // found by this step's collision detection (new, re-found) or kept by the cache
+      add(contact_section(index++, pair, pair.contacts[k], names, dt),
+          pair.contacts[k].origin == ContactOrigin::kept ? "cache" : "collision");
+    }
   }
   for (std::size_t j = 0; j < report.joints.size(); ++j) {
-    e.push_back(joint_section(world, static_cast<int>(j), report.joints[j], names));
+    add(joint_section(world, static_cast<int>(j), report.joints[j], names), "rows");
   }
   const std::vector<std::string> titles = row_titles(world, report, names);
-  for (int i = 0; i < report.velocity.mlcp.row_count(); ++i) {
-    e.push_back(row_section(report.velocity, i, "row " + std::to_string(i) + ": " + titles[i], names));
+  for (int i = 0; each_row && i < report.velocity.mlcp.row_count(); ++i) {
+    add(row_section(report.velocity, i, "row " + std::to_string(i) + ": " + titles[i], names), "rows");
   }
-  if (report.velocity.mlcp.row_count() > 0) e.push_back(sweeps_section(report.velocity, "PGS (eq. 3-24)"));
+  if (report.velocity.mlcp.row_count() > 0) add(sweeps_section(report.velocity, "PGS (eq. 3-24)"), "solve");
   if (report.position.mlcp.row_count() > 0) {
     Section position = sweeps_section(report.position,
                                       "split impulse (beyond the text): the position MLCP's PGS");
     position.quantities.push_back({"λ_p", "", "push-out λ of each contact row",
                                    json_of(report.position.solution.lambda), "N"});
-    e.push_back(position);
+    add(position, "solve");
   }
   for (std::size_t i = 0; i < at_t.size(); ++i) {
     if (at_t[i].is_static()) continue;
-    Section after = body_section(names.at(i) + " at t + Δt", world.bodies()[i], {"2-5", "2-6", "2-3", "2-4"});
-    after.quantities.insert(after.quantities.begin(), constraint_force(report.velocity, static_cast<int>(i)));
-    e.push_back(after);
+    add({names.at(i) + ": F_c = Jᵀ λ", {constraint_force(report.velocity, static_cast<int>(i))}}, "Jᵀλ");
+  }
+  for (std::size_t i = 0; i < at_t.size(); ++i) {
+    if (at_t[i].is_static()) continue;
+    add(body_section(names.at(i) + " at t + Δt", world.bodies()[i], {"2-5", "2-6", "2-3", "2-4"}),
+        "integration");
   }
   if (std::optional<Section> dense = dense_section(report.velocity, at_t, "the dense system (small)")) {
-    e.push_back(*dense);
+    add(*dense, "solve");
   }
   return e;
+}
+
+tutorial::ViewerStep viewer_step(const World& world, const WorldReport& report,
+                                 const std::vector<std::string>& names) {
+  tutorial::ViewerStep step;
+  step.phases = explain_world_step(world, report, names, false);  // rows: the viewer's table
+  step.body_names = names;
+  const Vec3& g = world.settings().step.gravity;
+  for (const RigidBody& body : report.bodies) step.at_t.push_back(viewer_body(body, g));
+  for (const RigidBody& body : world.bodies()) step.after.push_back(viewer_body(body, g));
+  add_viewer_rows(report.velocity, row_titles(world, report, names), step);
+  step.method = world.settings().solver;
+  int index = 0;
+  for (const ContactPair& pair : report.pairs) {
+    for (int k = 0; k < pair.count; ++k, ++index) {
+      const Contact& c = pair.contacts[k];
+      const ContactInfo info = contact_infos({pair})[static_cast<std::size_t>(k)];
+      tutorial::ViewerContact view;
+      view.bodies = {pair.bodies.first, pair.bodies.second};
+      view.x = info.point.x();
+      view.y = info.point.y();
+      view.nx = info.normal.x();
+      view.ny = info.normal.y();
+      view.separation = info.separation;
+      view.lambda_normal = info.lambda_normal;
+      view.lambda_tangent = info.lambda_tangent;
+      view.origin = origin_name(info.origin);
+      view.row = c.row;
+      step.rows.at(static_cast<std::size_t>(c.row)).kind = "contact";
+      step.rows.at(static_cast<std::size_t>(c.row)).contact = index;
+      for (const int f : c.friction_rows) {
+        if (f >= 0) step.rows.at(static_cast<std::size_t>(f)).contact = index;
+      }
+      step.contacts.push_back(view);
+    }
+  }
+  for (std::size_t j = 0; j < report.joints.size(); ++j) {
+    const RowRange& rows = report.joints[j];
+    const Constraint& constraint = world.joint(static_cast<int>(j));
+    tutorial::ViewerJoint view;
+    view.title = "joint " + std::to_string(j) + ": " + constraint.kind();
+    if (const std::optional<render::Joint> drawn = joint_view(report.bodies, constraint)) {
+      view.x1 = drawn->a.x();
+      view.y1 = drawn->a.y();
+      view.x2 = drawn->b.x();
+      view.y2 = drawn->b.y();
+    }
+    view.first_row = rows.first;
+    view.row_count = rows.count;
+    for (int m = 0; m < rows.count; ++m) {
+      tutorial::ViewerRow& row = step.rows.at(static_cast<std::size_t>(rows.first + m));
+      row.kind = "joint";
+      row.joint = static_cast<int>(j);
+    }
+    step.joints.push_back(view);
+  }
+  return step;
 }
 
 }  // namespace lamina::view

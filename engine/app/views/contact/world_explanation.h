@@ -16,7 +16,14 @@
 namespace lamina::view {
 
 // `world` has just taken the step `report` records; `names` names its bodies, in order.
+// `each_row`: a section per row of the MLCP (the viewer shows them as a table instead).
 Explanation explain_world_step(const World& world, const WorldReport& report,
-                               const std::vector<std::string>& names);
+                               const std::vector<std::string>& names, bool each_row = true);
+
+// The same step for the step-through viewer: its explanation as phases, the bodies at t and
+// t + Δt, every row with its kind, contact or joint and λ after each sweep, the contacts (with
+// their origin, Fig 4-2..4-5) and the joints.
+tutorial::ViewerStep viewer_step(const World& world, const WorldReport& report,
+                                 const std::vector<std::string>& names);
 
 }  // namespace lamina::view
