@@ -208,22 +208,31 @@ TEST_SUITE("SolverLab") {
   }
 
   TEST_CASE("soft-step behaves as Box2D v3 did on the table, where the table can tell") {
-    // Box2D v3.1.1 (4 substeps, one thread), measured when chapter 6 was planned: heavy-on-light
-    // :100 stands with the boxes 35 mm into each other, vertical-stack:20 topples, the chain
-    // stretches until the ball lies on the ground, pyramid:20 stands (3 mm). The soft step's
-    // springs give way by the same mechanism, so the same rows come out: an overlap of tens of
-    // millimetres (10 to 60 mm), a stack whose top box ends metres away, a stretch of tens of
-    // per cent, a standing pyramid. (heavy-on-light:1000, where v3 held on a knife edge with
-    // 35 cm of overlap, sinks through here: docs/ch6-beyond-the-text.md.)
+    // Box2D v3.1.1 built from its repository (4 substeps, one thread) and run on the same scenes,
+    // measured as the lab measures (tests never link it): heavy-on-light:100 deepest overlap
+    // 35.0 mm; heavy-on-light:1000 holds, deepest 478.9 mm, the boxes' centres 345.5 mm closer
+    // than touching at 10 s; vertical-stack:20 topples (top box 5.5 m away); the chain stretches
+    // until the ball lies on the ground (87 %); pyramid:20 stands (3.4 mm). Lamina's soft step
+    // (v3's colour order, anchors, bias and a corner as the first point of a flat touch)
+    // measured 34.9 mm, 486.7 mm and 351.9 mm, 2.6 m, 99.8 %, 3.3 mm. Tolerances: 1 mm on :100
+    // (the same springs, the same depth); 10 % on :1000, which v3 itself holds on a knife edge
+    // (2000 goes through in both); the rest as the table's ✓/✗ can tell.
     const LabRun light = run_lab("heavy-on-light:100", "soft-step", ten_seconds);
     MESSAGE("soft-step heavy-on-light:100: overlap " << light.deepest * 1e3 << " mm");
-    CHECK(light.deepest >= 0.010);
-    CHECK(light.deepest <= 0.060);
-    CHECK(light.sideways <= 0.05);
+    CHECK(std::abs(light.deepest - 0.0350) <= 0.001);
+    CHECK(light.sideways <= 0.01);
+    const LabRun heavy = run_lab("heavy-on-light:1000", "soft-step", ten_seconds);
+    const std::vector<Pose>& end = heavy.poses.back();
+    const double centres = 1.0 - (end[2].y() - end[1].y());  // the boxes' centres closer than touching
+    MESSAGE("soft-step heavy-on-light:1000: deepest " << heavy.deepest * 1e3 << " mm, centres "
+                                                      << centres * 1e3 << " mm at 10 s");
+    CHECK(!heavy.diverged);
+    CHECK(std::abs(heavy.deepest - 0.4789) <= 0.1 * 0.4789);
+    CHECK(std::abs(centres - 0.3455) <= 0.1 * 0.3455);
     const LabRun stack = run_lab("vertical-stack:20", "soft-step", ten_seconds);
     CHECK(stack.top_sway > 1.0);
     const LabRun chain = run_lab("ball-and-chain:100", "soft-step", ten_seconds);
-    CHECK(chain.stretch > 0.2);
+    CHECK(chain.stretch > 0.5);
     const LabRun pyramid = run_lab("pyramid:20", "soft-step", ten_seconds);
     CHECK(pyramid.samples.back().top <= 0.2);
     CHECK(pyramid.sideways <= 0.1);

@@ -12,6 +12,7 @@ namespace {
 struct Chapter6 {
   SolverInfo info;
   std::unique_ptr<StepMethod> (*make)();
+  bool midpoint_first = true;  // the narrow phase's first-contact tie rule (narrow_phase.h)
 };
 
 const std::vector<Chapter6>& chapter6() {
@@ -27,7 +28,8 @@ const std::vector<Chapter6>& chapter6() {
       {{"soft-step",
         "Box2D v3's soft step: 4 substeps, contact and joint rows softened by a spring (30 Hz "
         "and 60 Hz), a relax sweep without bias, restitution last"},
-       make_soft_step_method},
+       make_soft_step_method,
+       false},  // a flat first touch starts from a corner, as v3's two clipped points do
       {{"islands",
         "Lamina's own: small islands solved exactly, those with joints in 8 substeps, large ones "
         "by pgs; split impulse, slop and restitution as pgs (the default)"},
@@ -53,6 +55,7 @@ WorldSettings with_method(WorldSettings base, const std::string& name) {
     WorldSettings settings = with_solver(base, "pgs");
     settings.solver = name;
     settings.method = m.make;
+    settings.cache.ties.midpoint_first = m.midpoint_first;
     return settings;
   }
   for (const SolverInfo& s : solver_list()) {

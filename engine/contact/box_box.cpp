@@ -78,9 +78,10 @@ struct Candidates {
 
 // The deepest candidate; with ties broken, among candidates within the tolerance of the deepest:
 // on a first contact the midpoint of the deepest one's reference group (two vertices of one
-// edge: a flat landing pushes straight up); otherwise the candidate farthest from the cached
-// points, so that the cache gains the point it lacks. Ties beyond that go to the first
-// candidate, keeping the result deterministic.
+// edge: a flat landing pushes straight up), unless ties.midpoint_first is off; otherwise the
+// candidate farthest from the cached points, so that the cache gains the point it lacks (with
+// none cached, the first tied one). Ties beyond that go to the first candidate, keeping the
+// result deterministic.
 Collision choose(const Candidates& candidates, const CachedPoints& cached, const TieRule& ties) {
   double deepest = -std::numeric_limits<double>::infinity();
   int first = 0;
@@ -92,7 +93,7 @@ Collision choose(const Candidates& candidates, const CachedPoints& cached, const
   }
   if (!ties.break_ties) return candidates.items[first];
   const auto tied = [&](const Collision& c) { return c.depth >= deepest - ties.tolerance; };
-  if (cached.count == 0) {
+  if (cached.count == 0 && ties.midpoint_first) {
     Collision mid = candidates.items[first];
     mid.point.setZero();
     mid.depth = 0.0;

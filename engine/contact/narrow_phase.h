@@ -35,6 +35,10 @@ struct Collision {
 struct TieRule {
   bool break_ties = true;   // false: the first deepest vertex found, as the text reads
   double tolerance = 5e-4;  // vertices this close to the deepest count as equally deep, in m
+  // A first contact's tied vertices of one edge give their midpoint (a flat landing pushes
+  // straight up); false: the first of them, a corner, whose partner the cache gains next step
+  // (chapter 6's soft-step, closer to Box2D v3's clipped two-point manifold).
+  bool midpoint_first = true;
 };
 
 // The points a pair's cache already holds (world frame), for breaking ties between equally deep

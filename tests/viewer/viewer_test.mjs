@@ -59,7 +59,7 @@ function send(method, params = {}, sessionId) {
   browser.stdio[3].write(JSON.stringify({ id, method, params, ...(sessionId ? { sessionId } : {}) }) + "\0");
   return new Promise((resolve, reject) => waiting.set(id, { resolve, reject }));
 }
-function once(method, timeout = 20000) {
+function once(method, timeout = 60000) {
   return new Promise((resolve, reject) => {
     const timer = setTimeout(() => reject(new Error(`no ${method} in ${timeout} ms`)), timeout);
     const listen = (m) => {
