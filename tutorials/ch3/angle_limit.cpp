@@ -70,14 +70,14 @@ class AngleLimitScene : public tutorial::Scene {
     frame.legend_corner = render::Corner::bottom_left;
   }
 
-  tutorial::Explanation explain() const override {
-    return explain_system(s_, "Angle limit",
-                          {"pin, x row: C = x̂·(p_b − p_a)", "pin, y row: C = ŷ·(p_b − p_a)",
-                           "angle limit, C = θ − θ_L ≥ 0 (eq. 3-17)"});
-  }
+  tutorial::Explanation explain() const override { return explain_system(s_, "Angle limit", rows); }
+  void record(tutorial::ViewerStep& step) const override { record_system(s_, rows, step); }
 
  private:
   // the rows are written in the constraints' order: the pin's x and y rows, then the limit's
+  inline static const std::vector<std::string> rows = {"pin, x row: C = x̂·(p_b − p_a)",
+                                                       "pin, y row: C = ŷ·(p_b − p_a)",
+                                                       "angle limit, C = θ − θ_L ≥ 0 (eq. 3-17)"};
   static constexpr int limit_row = 2;
   double lambda() const { return s_.report.solution.lambda[limit_row]; }
   double slack() const { return s_.report.slack()[limit_row]; }

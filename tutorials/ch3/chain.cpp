@@ -119,7 +119,11 @@ class Chain : public tutorial::Scene {
     frame.legend_corner = render::Corner::bottom_left;
   }
 
-  tutorial::Explanation explain() const override {
+  tutorial::Explanation explain() const override { return explain_system(s_, "Chain", row_names()); }
+  void record(tutorial::ViewerStep& step) const override { record_system(s_, row_names(), step); }
+
+  // The rows: each joint's x and y rows, from the world pin down.
+  static std::vector<std::string> row_names() {
     std::vector<std::string> names;
     for (int i = 0; i < links; ++i) {
       const std::string joint =
@@ -128,7 +132,7 @@ class Chain : public tutorial::Scene {
       names.push_back(joint + ", x row: C = x̂·(p_b − p_a)");
       names.push_back(joint + ", y row: C = ŷ·(p_b − p_a)");
     }
-    return explain_system(s_, "Chain", names);
+    return names;
   }
 
   // pgs_residual.png: a fresh chain up to t = comparison_step Δt, then that step from both guesses.

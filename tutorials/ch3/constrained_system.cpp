@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "app/views/constraints/mlcp_explanation.h"
+#include "app/views/motion/body_view.h"
 #include "ch3/text_pgs_explanation.h"
 
 namespace lamina::ch3 {
@@ -43,6 +44,16 @@ tutorial::Explanation explain_system(const System& s, const std::string& title,
   }
   if (auto dense = view::dense_section(s.report, s.at_t, title + ": the dense system")) e.push_back(*dense);
   return e;
+}
+
+void record_system(const System& s, const std::vector<std::string>& row_names,
+                   tutorial::ViewerStep& step) {
+  step.body_names = view::numbered_bodies(s.bodies.size());
+  for (const RigidBody& b : s.at_t) step.at_t.push_back(view::viewer_body(b, gravity));
+  for (const RigidBody& b : s.bodies) step.after.push_back(view::viewer_body(b, gravity));
+  step.method = "PGS (constrained_step)";
+  view::add_viewer_rows(s.report, row_names, step);
+  for (tutorial::ViewerRow& row : step.rows) row.kind = "joint";
 }
 
 render::Body mount(const Vec3& pivot) {

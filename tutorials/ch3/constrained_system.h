@@ -55,4 +55,9 @@ render::Body mount(const Vec3& pivot);
 tutorial::Explanation explain_system(const System& s, const std::string& title,
                                      const std::vector<std::string>& row_names);
 
+// Step k of the system for the step-through viewer: the bodies at t and t + Δt, and each row
+// (named by `row_names`, of kind "joint": chapter 3's constraints) with λ after every sweep.
+void record_system(const System& s, const std::vector<std::string>& row_names,
+                   tutorial::ViewerStep& step);
+
 }  // namespace lamina::ch3

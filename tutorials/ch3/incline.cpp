@@ -58,11 +58,11 @@ class Incline : public tutorial::Scene {
     frame.legend_corner = render::Corner::bottom_left;
   }
 
-  tutorial::Explanation explain() const override {
-    return explain_system(s_, "Fig 3-1 incline", {"incline, C = (x − p)·N (eq. 3-1)"});
-  }
+  tutorial::Explanation explain() const override { return explain_system(s_, "Fig 3-1 incline", rows); }
+  void record(tutorial::ViewerStep& step) const override { record_system(s_, rows, step); }
 
  private:
+  inline static const std::vector<std::string> rows = {"incline, C = (x − p)·N (eq. 3-1)"};
   double lambda() const { return s_.report.solution.lambda[0]; }
   static double speed(const RigidBody& box) { return planar(box.v).dot(downhill); }
 

@@ -71,11 +71,12 @@ class OneSidedIncline : public tutorial::Scene {
   }
 
   tutorial::Explanation explain() const override {
-    return explain_system(s_, "Fig 3-2 one-sided incline",
-                          {"one-sided incline, C = (x − p)·N ≥ 0 (eq. 3-17)"});
+    return explain_system(s_, "Fig 3-2 one-sided incline", rows);
   }
+  void record(tutorial::ViewerStep& step) const override { record_system(s_, rows, step); }
 
  private:
+  inline static const std::vector<std::string> rows = {"one-sided incline, C = (x − p)·N ≥ 0 (eq. 3-17)"};
   double lambda() const { return s_.report.solution.lambda[0]; }
   double slack() const { return s_.report.slack()[0]; }
 
