@@ -1,10 +1,10 @@
-// Painters turn a Frame into triangles in the lecture style, one layer per function, drawn in
-// the order below (later layers on top).
+// Painters turn a Frame into drawing commands (draw_list.h) in the lecture style, one layer per
+// function, drawn in the order below (later layers on top).
 #pragma once
 
+#include "render/draw_list.h"
 #include "render/frame.h"
 #include "render/style.h"
-#include "render/tessellate.h"
 #include "render/typesetter.h"
 
 namespace lamina::render {
@@ -21,7 +21,7 @@ inline constexpr Colour cached_contact = palette::reddish_purple;
 
 // What every painter draws with.
 struct Canvas {
-  Mesh& mesh;
+  DrawList& draw;
   const Camera& camera;
   const Style& style;
   Typesetter& text;

@@ -56,11 +56,11 @@ void paint_grid(const Frame&, Canvas& c) {
   const Ticks tx = x_ticks(c), ty = y_ticks(c);
   for (long k = tx.first; k <= tx.last; ++k) {
     const double x = c.px(Vec2(k * tx.step, 0.0)).x();
-    stroke_segment(c.mesh, Vec2(x, a.min.y()), Vec2(x, a.max.y()), c.style.unit, palette::grid);
+    c.draw.stroke_segment(Vec2(x, a.min.y()), Vec2(x, a.max.y()), c.style.unit, palette::grid);
   }
   for (long k = ty.first; k <= ty.last; ++k) {
     const double y = c.px(Vec2(0.0, k * ty.step)).y();
-    stroke_segment(c.mesh, Vec2(a.min.x(), y), Vec2(a.max.x(), y), c.style.unit, palette::grid);
+    c.draw.stroke_segment(Vec2(a.min.x(), y), Vec2(a.max.x(), y), c.style.unit, palette::grid);
   }
 }
 
@@ -72,18 +72,18 @@ void paint_axes(const Frame&, Canvas& c) {
   const Ticks tx = x_ticks(c), ty = y_ticks(c);
   for (long k = tx.first; k <= tx.last; ++k) {
     const double x = c.px(Vec2(k * tx.step, 0.0)).x();
-    stroke_segment(c.mesh, Vec2(x, a.max.y()), Vec2(x, a.max.y() + tick), c.style.unit,
+    c.draw.stroke_segment(Vec2(x, a.max.y()), Vec2(x, a.max.y() + tick), c.style.unit,
                    palette::grey);
     c.write(tx.text(k), style, Vec2(x, a.max.y() + tick + 0.7 * c.style.tick_px), 0.5);
   }
   for (long k = ty.first; k <= ty.last; ++k) {
     const double y = c.px(Vec2(0.0, k * ty.step)).y();
-    stroke_segment(c.mesh, Vec2(a.min.x() - tick, y), Vec2(a.min.x(), y), c.style.unit,
+    c.draw.stroke_segment(Vec2(a.min.x() - tick, y), Vec2(a.min.x(), y), c.style.unit,
                    palette::grey);
     c.write(ty.text(k), style, Vec2(a.min.x() - 1.5 * tick, y), 1.0);
   }
-  stroke_segment(c.mesh, Vec2(a.min.x(), a.max.y()), a.max, c.style.unit, palette::grey);
-  stroke_segment(c.mesh, a.min, Vec2(a.min.x(), a.max.y()), c.style.unit, palette::grey);
+  c.draw.stroke_segment(Vec2(a.min.x(), a.max.y()), a.max, c.style.unit, palette::grey);
+  c.draw.stroke_segment(a.min, Vec2(a.min.x(), a.max.y()), c.style.unit, palette::grey);
 }
 
 }  // namespace lamina::render

@@ -53,20 +53,20 @@ void draw_sample(const Canvas& c, const LegendEntry& e, const Vec2& left, double
   const Vec2 right = left + Vec2(width, 0.0), middle = left + Vec2(0.5 * width, 0.0);
   switch (e.sample) {
     case Sample::arrow:
-      draw_arrow(c.mesh, left, right, c.style.arrow, e.colour);
+      c.draw.draw_arrow(left, right, c.style.arrow, e.colour);
       break;
     case Sample::line:
-      stroke_segment(c.mesh, left, right, c.style.line, e.colour);
+      c.draw.stroke_segment(left, right, c.style.line, e.colour);
       break;
     case Sample::dashed_line:
-      stroke_polyline(c.mesh, {left, right}, c.style.line, e.colour, 0.3 * width);
+      c.draw.stroke_polyline({left, right}, c.style.line, e.colour, 0.3 * width);
       break;
     case Sample::swatch: {
       const Vec2 half(0.3 * width, 0.3 * c.style.text_px);
       const std::vector<Vec2> box{middle - half, middle + Vec2(half.x(), -half.y()), middle + half,
                                   middle + Vec2(-half.x(), half.y())};
-      fill_convex(c.mesh, box, e.colour);
-      stroke_convex(c.mesh, box, c.style.outline, palette::ink);
+      c.draw.fill_convex(box, e.colour);
+      c.draw.stroke_convex(box, c.style.outline, palette::ink);
       break;
     }
     case Sample::point:

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "render/paint.h"
+#include "render/tessellate.h"
 
 namespace lamina::render {
 namespace {
@@ -9,7 +10,7 @@ namespace {
 void paint_velocities(Canvas& c, const Frame& frame) {
   for (const Body& b : frame.bodies) {
     if (b.fixed) continue;
-    draw_arrow(c.mesh, c.px(b.centre), c.px(b.centre + frame.velocity_scale * b.velocity),
+    c.draw.draw_arrow(c.px(b.centre), c.px(b.centre + frame.velocity_scale * b.velocity),
                c.style.arrow, layer_colour::velocity);
   }
 }
@@ -18,7 +19,7 @@ void paint_normals(Canvas& c, const Frame& frame) {
   const double length = 30.0 * c.style.unit;
   for (const Contact& k : frame.contacts) {
     const Vec2 at = c.px(k.point);
-    draw_arrow(c.mesh, at, at + length * Vec2(k.normal.x(), -k.normal.y()).normalized(),
+    c.draw.draw_arrow(at, at + length * Vec2(k.normal.x(), -k.normal.y()).normalized(),
                c.style.line, layer_colour::normal);
   }
 }
@@ -27,9 +28,9 @@ void paint_normals(Canvas& c, const Frame& frame) {
 void paint_forces(Canvas& c, const Frame& frame) {
   for (const Contact& k : frame.contacts) {
     const Vec2 at = c.px(k.point);
-    draw_arrow(c.mesh, at, c.px(k.point + frame.force_scale * k.normal_force * k.normal),
+    c.draw.draw_arrow(at, c.px(k.point + frame.force_scale * k.normal_force * k.normal),
                c.style.arrow, layer_colour::normal_force);
-    draw_arrow(c.mesh, at, c.px(k.point + frame.force_scale * k.friction_force * k.tangent),
+    c.draw.draw_arrow(at, c.px(k.point + frame.force_scale * k.friction_force * k.tangent),
                c.style.arrow, layer_colour::friction);
   }
 }
@@ -59,7 +60,7 @@ void paint_centres(Canvas& c, const Frame& frame) {
 }  // namespace
 
 void draw_point(const Canvas& c, const Vec2& at, Colour colour) {
-  fill_ringed_disc(c.mesh, at, c.style.marker, colour, 0.6 * c.style.outline, palette::ink);
+  c.draw.fill_ringed_disc(at, c.style.marker, colour, 0.6 * c.style.outline, palette::ink);
 }
 
 void draw_fresh_contact(const Canvas& c, const Vec2& at) {
@@ -70,20 +71,20 @@ void draw_cached_contact(const Canvas& c, const Vec2& at) {
   const double r = 1.35 * c.style.marker;
   const std::vector<Vec2> diamond{at + Vec2(r, 0), at + Vec2(0, r), at - Vec2(r, 0),
                                   at - Vec2(0, r)};
-  fill_convex(c.mesh, diamond, layer_colour::cached_contact);
-  stroke_convex(c.mesh, diamond, 0.6 * c.style.outline, palette::ink);
+  c.draw.fill_convex(diamond, layer_colour::cached_contact);
+  c.draw.stroke_convex(diamond, 0.6 * c.style.outline, palette::ink);
 }
 
 void draw_refound_contact(const Canvas& c, const Vec2& at) {
   draw_cached_contact(c, at);
-  fill_ringed_disc(c.mesh, at, 0.75 * c.style.marker, layer_colour::fresh_contact,
+  c.draw.fill_ringed_disc(at, 0.75 * c.style.marker, layer_colour::fresh_contact,
                    0.5 * c.style.outline, palette::ink);
 }
 
 // The centre-of-mass symbol: a dark disc with two opposite white quarters, turning with the body.
 void draw_centre_mark(const Canvas& c, const Vec2& at, double angle) {
   const double r = 1.2 * c.style.marker;
-  fill_disc(c.mesh, at, r, palette::ink);
+  c.draw.fill_disc(at, r, palette::ink);
   const std::vector<Vec2> rim = circle_points(at, r - 0.6 * c.style.outline);
   const std::size_t n = rim.size(), quarter = n / 4;
   // Pixel angles run clockwise (y down), so a body angle θ is −θ on screen.
@@ -92,7 +93,7 @@ void draw_centre_mark(const Canvas& c, const Vec2& at, double angle) {
   for (std::size_t q : {first + quarter, first + 3 * quarter}) {
     std::vector<Vec2> sector{at};
     for (std::size_t i = 0; i <= quarter; ++i) sector.push_back(rim[(q + i) % n]);
-    fill_convex(c.mesh, sector, palette::white);
+    c.draw.fill_convex(sector, palette::white);
   }
 }
 

@@ -25,7 +25,7 @@ void paint_top_bar(const Frame& frame, Canvas& c) {
   c.write(frame.status, {Typeface::sans, c.style.text_px, palette::grey},
           Vec2(c.size.width - c.style.margin, middle), 1.0);
   const double rule = c.style.top_bar() - 0.5 * c.style.margin;
-  stroke_segment(c.mesh, Vec2(c.style.margin, rule), Vec2(c.size.width - c.style.margin, rule),
+  c.draw.stroke_segment(Vec2(c.style.margin, rule), Vec2(c.size.width - c.style.margin, rule),
                  c.style.unit, palette::grid);
 }
 
@@ -65,7 +65,7 @@ void Canvas::write(std::string_view line, const TextStyle& style, const Vec2& an
                    double align_x) const {
   const LineMetrics m = text.metrics(style.face, style.px);
   const double left = anchor.x() - align_x * text.width(line, style.face, style.px);
-  text.draw(mesh, line, style, Vec2(left, anchor.y() + 0.5 * (m.ascender - m.descender)));
+  draw.text(line, style, Vec2(left, anchor.y() + 0.5 * (m.ascender - m.descender)));
 }
 
 double panel_padding(const Style& style) { return 0.6 * style.margin; }
@@ -88,8 +88,8 @@ Vec2 corner_position(const Canvas& c, Corner corner, const Vec2& size) {
 void draw_text_box(const Canvas& c, const Rect& box) {
   const std::vector<Vec2> corners{box.min, Vec2(box.max.x(), box.min.y()), box.max,
                                   Vec2(box.min.x(), box.max.y())};
-  fill_convex(c.mesh, corners, with_alpha(palette::white, 230));
-  stroke_convex(c.mesh, corners, c.style.unit, palette::grid);
+  c.draw.fill_convex(corners, with_alpha(palette::white, 230));
+  c.draw.stroke_convex(corners, c.style.unit, palette::grid);
 }
 
 void paint_text(const Frame& frame, Canvas& canvas) {

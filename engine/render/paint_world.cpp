@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "render/paint.h"
+#include "render/tessellate.h"
 
 namespace lamina::render {
 namespace {
@@ -26,11 +27,11 @@ void paint_body(Canvas& c, const Body& body) {
   const double reach = box ? body.half_extents.x() : body.radius;
   const std::vector<Vec2> outline =
       box ? box_corners(c, body) : circle_points(centre, body.radius * c.camera.pixels_per_metre());
-  fill_convex(c.mesh, outline, body.fill);
-  stroke_convex(c.mesh, outline, c.style.outline, palette::ink);
+  c.draw.fill_convex(outline, body.fill);
+  c.draw.stroke_convex(outline, c.style.outline, palette::ink);
   if (body.fixed) return;
   const Vec2 mark = c.px(body.centre + reach * direction(body.angle));
-  stroke_segment(c.mesh, centre, mark, c.style.line, palette::ink);
+  c.draw.stroke_segment(centre, mark, c.style.line, palette::ink);
 }
 
 // A band below the surface line, hatched at 45°, as engineering drawings show fixed ground.
@@ -43,21 +44,21 @@ void paint_ground(Canvas& c, const Ground& ground) {
   const double half = std::hypot(c.size.width, c.size.height);
   const double depth = 16.0 * c.style.unit, spacing = 14.0 * c.style.unit;
   const Vec2 a = foot - half * t, b = foot + half * t;
-  fill_convex(c.mesh, {a, b, b - depth * n, a - depth * n}, tint(palette::grey, 0.18));
+  c.draw.fill_convex({a, b, b - depth * n, a - depth * n}, tint(palette::grey, 0.18));
   for (double s = -half; s < half; s += spacing) {
     const Vec2 top = foot + s * t;
-    stroke_segment(c.mesh, top, top - depth * n + depth * t, c.style.unit, palette::grey);
+    c.draw.stroke_segment(top, top - depth * n + depth * t, c.style.unit, palette::grey);
   }
-  stroke_segment(c.mesh, a, b, c.style.outline * 1.25, palette::ink);
+  c.draw.stroke_segment(a, b, c.style.outline * 1.25, palette::ink);
 }
 
 void paint_pin(Canvas& c, const Vec2& at) {
-  fill_ringed_disc(c.mesh, at, c.style.marker, palette::white, c.style.outline, palette::ink);
-  fill_disc(c.mesh, at, 0.3 * c.style.marker, palette::ink);
+  c.draw.fill_ringed_disc(at, c.style.marker, palette::white, c.style.outline, palette::ink);
+  c.draw.fill_disc(at, 0.3 * c.style.marker, palette::ink);
 }
 
 void paint_joint(Canvas& c, const Joint& joint) {
-  stroke_segment(c.mesh, c.px(joint.a), c.px(joint.b), c.style.outline, palette::ink);
+  c.draw.stroke_segment(c.px(joint.a), c.px(joint.b), c.style.outline, palette::ink);
   paint_pin(c, c.px(joint.a));
   paint_pin(c, c.px(joint.b));
 }
@@ -65,7 +66,7 @@ void paint_joint(Canvas& c, const Joint& joint) {
 void paint_arrow(Canvas& c, const Arrow& arrow) {
   if (arrow.layer && !c.overlays.has(*arrow.layer)) return;
   const Vec2 from = c.px(arrow.from), to = c.px(arrow.to);
-  draw_arrow(c.mesh, from, to, c.style.arrow, arrow.colour);
+  c.draw.draw_arrow(from, to, c.style.arrow, arrow.colour);
   if (arrow.label.empty()) return;
   const Vec2 d = (to - from).norm() > 0.0 ? Vec2((to - from).normalized()) : Vec2::UnitX();
   const TextStyle style{Typeface::sans, c.style.text_px, arrow.colour};
@@ -82,7 +83,7 @@ void paint_label(Canvas& c, const Label& label) {
 void paint_path(Canvas& c, const Path& path) {
   std::vector<Vec2> points;
   for (const Vec2& p : path.points) points.push_back(c.px(p));
-  stroke_polyline(c.mesh, points, c.style.line, path.colour,
+  c.draw.stroke_polyline(points, c.style.line, path.colour,
                   path.dashed ? 9.0 * c.style.unit : 0.0);
 }
 

@@ -75,16 +75,16 @@ struct Renderer::Impl {
     atlas.mark_uploaded();
   }
 
-  Mesh paint(const Frame& frame, const Camera& camera, const Overlays& overlays) {
-    Mesh mesh(text.atlas().solid_uv());
-    Canvas canvas{mesh, camera, style, text, size, overlays};
+  DrawList paint(const Frame& frame, const Camera& camera, const Overlays& overlays) {
+    DrawList list;
+    Canvas canvas{list, camera, style, text, size, overlays};
     paint_grid(frame, canvas);
     paint_world(frame, canvas);
     paint_overlays(frame, canvas);
     paint_axes(frame, canvas);
     paint_text(frame, canvas);
     paint_legend(frame, canvas);
-    return mesh;
+    return list;
   }
 
   void draw(const Mesh& mesh) {
@@ -114,8 +114,17 @@ Renderer::Renderer(const GlContext& context, const FrameSize& size)
 
 Renderer::~Renderer() = default;
 
+DrawList Renderer::paint(const Frame& frame, const Camera& camera, const Overlays& overlays) {
+  return impl_->paint(frame, camera, overlays);
+}
+
 Image Renderer::render(const Frame& frame, const Camera& camera, const Overlays& overlays) {
-  const Mesh mesh = impl_->paint(frame, camera, overlays);
+  return rasterise(impl_->paint(frame, camera, overlays));
+}
+
+Image Renderer::rasterise(const DrawList& list) {
+  Mesh mesh(impl_->text.atlas().solid_uv());
+  tessellate(list, mesh, impl_->text);
   impl_->upload_new_glyphs();
   impl_->draw(mesh);
   Image image = impl_->target.read();

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "render/camera.h"
+#include "render/draw_list.h"
 #include "render/frame.h"
 #include "render/gl_context.h"
 #include "render/image.h"
@@ -21,8 +22,13 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // The frame as the camera sees it, with the given overlays, anti-aliased by 4× MSAA.
+  // The frame as the camera sees it, with the given overlays, anti-aliased by 4× MSAA:
+  // rasterise(paint(...)).
   Image render(const Frame& frame, const Camera& camera, const Overlays& overlays);
+  // The frame as drawing commands, in pixels: what every output format is made from.
+  DrawList paint(const Frame& frame, const Camera& camera, const Overlays& overlays);
+  // The commands drawn by OpenGL.
+  Image rasterise(const DrawList& list);
 
  private:
   struct Impl;
