@@ -14,6 +14,7 @@ struct Renderer::Impl {
   GlApi gl;
   FrameSize size;
   Style style;
+  Colour background = palette::background;
   Typesetter text;
   RenderTarget target;
   GLuint program = 0;
@@ -88,7 +89,7 @@ struct Renderer::Impl {
   }
 
   void draw(const Mesh& mesh) {
-    target.begin(palette::background);
+    target.begin(background);
     gl.UseProgram(program);
     gl.Uniform2f(gl.GetUniformLocation(program, "frame_size"), static_cast<float>(size.width),
                  static_cast<float>(size.height));
@@ -113,6 +114,8 @@ Renderer::Renderer(const GlContext& context, const FrameSize& size)
     : impl_(std::make_unique<Impl>(context, size)) {}
 
 Renderer::~Renderer() = default;
+
+void Renderer::set_background(Colour colour) { impl_->background = colour; }
 
 DrawList Renderer::paint(const Frame& frame, const Camera& camera, const Overlays& overlays) {
   return impl_->paint(frame, camera, overlays);

@@ -29,6 +29,8 @@ class Renderer {
   DrawList paint(const Frame& frame, const Camera& camera, const Overlays& overlays);
   // The commands drawn by OpenGL.
   Image rasterise(const DrawList& list);
+  // The colour behind the drawing (opaque; the paper colour unless set).
+  void set_background(Colour colour);
 
  private:
   struct Impl;

@@ -115,17 +115,33 @@ void fill_ringed_disc(Mesh& mesh, const Vec2& centre, double radius, Colour fill
   fill_disc(mesh, centre, radius - 0.5 * ring_width, fill);
 }
 
-void draw_arrow(Mesh& mesh, const Vec2& from, const Vec2& to, double width, Colour colour) {
+ArrowShape arrow_shape(const Vec2& from, const Vec2& to, double width) {
+  ArrowShape shape;
   const Vec2 d = to - from;
   const double length = d.norm();
-  if (length < 1.0) return;
+  if (length < 1.0) return shape;
   const Vec2 u = d / length;
-  // The head is 4.5 shaft widths long, at most 45 % of a short arrow.
   const double head = std::min(4.5 * width, 0.45 * length);
   const Vec2 base = to - u * head;
   const Vec2 side = perpendicular(u) * (0.5 * head);
-  stroke_segment(mesh, from, base + u * (0.1 * head), width, colour);
-  mesh.triangle(to, base + side, base - side, colour);
+  shape.drawn = true;
+  shape.shaft_from = from;
+  shape.shaft_to = base + u * (0.1 * head);  // into the head, so no seam shows
+  shape.head = {to, base + side, base - side};
+  return shape;
+}
+
+std::vector<std::array<Vec2, 2>> dashes(const std::vector<Vec2>& points, double dash) {
+  std::vector<std::array<Vec2, 2>> list;
+  for_each_dash(points, dash, [&](const Vec2& a, const Vec2& b) { list.push_back({a, b}); });
+  return list;
+}
+
+void draw_arrow(Mesh& mesh, const Vec2& from, const Vec2& to, double width, Colour colour) {
+  const ArrowShape shape = arrow_shape(from, to, width);
+  if (!shape.drawn) return;
+  stroke_segment(mesh, shape.shaft_from, shape.shaft_to, width, colour);
+  mesh.triangle(shape.head[0], shape.head[1], shape.head[2], colour);
 }
 
 }  // namespace lamina::render

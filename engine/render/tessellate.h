@@ -2,6 +2,7 @@
 // frame always gives the same triangles (deterministic frames).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "render/mesh.h"
@@ -10,6 +11,19 @@ namespace lamina::render {
 
 // The corners of a regular polygon approximating a circle; the count grows with the radius.
 std::vector<Vec2> circle_points(const Vec2& centre, double radius);
+
+// An arrow's parts: a shaft (a segment `width` wide) and a triangular head, whose tip is `to`;
+// not drawn when shorter than a pixel. The head is 4.5 shaft widths long, at most 45 % of a
+// short arrow. Every output draws arrows from these (tessellate, vector_output).
+struct ArrowShape {
+  bool drawn = false;
+  Vec2 shaft_from = Vec2::Zero(), shaft_to = Vec2::Zero();
+  std::array<Vec2, 3> head{};  // tip, then the base's two corners
+};
+ArrowShape arrow_shape(const Vec2& from, const Vec2& to, double width);
+
+// The dashes of a polyline, `dash` on and 0.7 dash off, as segments.
+std::vector<std::array<Vec2, 2>> dashes(const std::vector<Vec2>& points, double dash);
 
 // A convex polygon, filled.
 void fill_convex(Mesh& mesh, const std::vector<Vec2>& polygon, Colour colour);

@@ -66,10 +66,18 @@ struct Typesetter::Impl {
   }
 };
 
+std::string font_file(Typeface face) {
+  return std::string(LAMINA_FONT_DIR) + "/" + face_files[static_cast<std::size_t>(face)];
+}
+
+std::string font_family(Typeface face) { return face == Typeface::mono ? "DejaVu Sans Mono" : "DejaVu Sans"; }
+
+bool is_bold(Typeface face) { return face == Typeface::bold; }
+
 Typesetter::Typesetter() : impl_(std::make_unique<Impl>()) {
   if (FT_Init_FreeType(&impl_->library) != 0) throw std::runtime_error("cannot start FreeType");
   for (std::size_t i = 0; i < face_files.size(); ++i) {
-    const std::string path = std::string(LAMINA_FONT_DIR) + "/" + face_files[i];
+    const std::string path = font_file(static_cast<Typeface>(i));
     if (FT_New_Face(impl_->library, path.c_str(), 0, &impl_->faces[i]) != 0) {
       FT_Done_FreeType(impl_->library);
       throw std::runtime_error("cannot open font " + path +

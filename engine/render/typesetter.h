@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <string_view>
 
 #include "render/glyph_atlas.h"
@@ -11,6 +12,12 @@
 namespace lamina::render {
 
 enum class Typeface { sans, bold, mono };
+
+// The DejaVu font file of a typeface (fonts-dejavu-core), for outputs that embed or name it.
+std::string font_file(Typeface face);
+// Its family name as SVG and CSS know it, e.g. "DejaVu Sans Mono", and whether it is bold.
+std::string font_family(Typeface face);
+bool is_bold(Typeface face);
 
 struct TextStyle {
   Typeface face = Typeface::sans;

@@ -15,6 +15,7 @@
 #include "render/frame.h"
 #include "render/overlay.h"
 #include "render/style.h"
+#include "render/vector_output.h"
 
 namespace CLI {
 class App;
@@ -23,16 +24,26 @@ class Option;
 
 namespace lamina::tutorial {
 
+// The file formats of frames (docs/slides.md).
+enum class FrameFormat { png, svg, pdf };
+
 struct RenderRequest {
   std::filesystem::path out;                             // the folder the frames go to
   render::FrameSize size{1280, 720};                     // --size WxH, in pixels
   render::Overlays overlays;                             // --overlay LIST
   render::Backend backend = render::default_backend();   // --backend
+  FrameFormat format = FrameFormat::png;                 // --format png|svg|pdf
+  bool pdf_pages = false;                                // --pdf-pages: one PDF of every frame
+  render::Background background{};                       // --background paper|transparent|#rrggbb
 };
 
-// Adds --size, --overlay and --backend to a command line, parsed straight into `request`, whose
-// values are the defaults --help shows. A bad value is one line naming the option. Returns the
-// three options (so that a caller can make them need another, as lamina's need --frames).
+// "paper", "transparent" or "#rrggbb"; throws std::invalid_argument for anything else.
+render::Background parse_background(const std::string& text);
+
+// Adds --size, --overlay, --backend, --format, --pdf-pages and --background to a command line,
+// parsed straight into `request`, whose values are the defaults --help shows. A bad value is one
+// line naming the option. Returns the options (so that a caller can make them need another, as
+// lamina's need --frames or --viewer).
 std::vector<CLI::Option*> add_render_options(CLI::App& app, RenderRequest& request);
 
 // Adds --viewer DIR (described by `help`) and --viewer-steps A:B (parse_step_window, viewer.h),

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
+#include <optional>
 #include <thread>
 
 #include "app/harness/render_request.h"
@@ -26,9 +28,9 @@ int encoder_threads() {
   return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 4u));
 }
 
-std::string frame_name(const std::string& scene, int index) {
+std::string frame_name(const std::string& scene, int index, const char* extension = "png") {
   char name[32];
-  std::snprintf(name, sizeof name, "_%04d.png", index);
+  std::snprintf(name, sizeof name, "_%04d.%s", index, extension);
   return scene + name;
 }
 
@@ -102,7 +104,37 @@ std::vector<CLI::Option*> add_render_options(CLI::App& app, RenderRequest& reque
   backend->type_name("NAME")
       ->default_str(render::backend_name(request.backend))
       ->check(CLI::IsMember(backends));
-  return {size, overlays, backend};
+  const std::map<std::string, FrameFormat> formats{
+      {"png", FrameFormat::png}, {"svg", FrameFormat::svg}, {"pdf", FrameFormat::pdf}};
+  CLI::Option* format = app.add_option_function<std::string>(
+      "--format", [&request, formats](const std::string& name) { request.format = formats.at(name); },
+      "png, or svg and pdf, vector frames whose text stays text (docs/slides.md)");
+  format->type_name("FORMAT")->default_str("png")->check(CLI::IsMember({"png", "svg", "pdf"}));
+  CLI::Option* pages = app.add_flag("--pdf-pages", request.pdf_pages,
+                                    "with --format pdf: one PDF of all the frames, a page each, "
+                                    "instead of a file per frame");
+  CLI::Option* background = app.add_option_function<std::string>(
+      "--background",
+      [&request](const std::string& text) { request.background = parse_background(text); },
+      "behind the drawing: paper, transparent (SVG and PDF) or a colour #rrggbb");
+  background->type_name("COLOUR")->default_str("paper")->check(checked_by(parse_background, "COLOUR"));
+  return {size, overlays, backend, format, pages, background};
+}
+
+render::Background parse_background(const std::string& text) {
+  render::Background background;
+  if (text == "paper") return background;
+  if (text == "transparent") {
+    background.transparent = true;
+    return background;
+  }
+  unsigned int r = 0, g = 0, b = 0;
+  char end = 0;
+  if (text.size() != 7 || std::sscanf(text.c_str(), "#%2x%2x%2x%c", &r, &g, &b, &end) != 3) {
+    throw std::invalid_argument("expected paper, transparent or #rrggbb, got '" + text + "'");
+  }
+  background.colour = {static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g), static_cast<std::uint8_t>(b)};
+  return background;
 }
 
 CLI::Option* add_viewer_options(CLI::App& app, std::optional<std::filesystem::path>& viewer,
@@ -132,8 +164,15 @@ struct FrameRenderer::Pipeline {
 };
 
 FrameRenderer::FrameRenderer(const RenderRequest& request) : request_(request) {
+  if (request_.format == FrameFormat::png && request_.background.transparent) {
+    throw OutputError("--background transparent: PNG frames are opaque; use --format svg or pdf");
+  }
+  if (request_.pdf_pages && request_.format != FrameFormat::pdf) {
+    throw OutputError("--pdf-pages needs --format pdf");
+  }
   prepare_output_folder(request_.out);
   pipeline_ = std::make_unique<Pipeline>(request_);
+  pipeline_->renderer.set_background(request_.background.colour);
 }
 
 FrameRenderer::~FrameRenderer() = default;
@@ -144,11 +183,37 @@ int FrameRenderer::render(const std::string& name, const render::Rect& view, dou
   int count = 0;
   render::Frame frame;
   long step = 0;
+  // --pdf-pages: every frame a page of <name>.pdf, written whole once the last is drawn
+  std::optional<render::PdfDocument> pages;
+  if (request_.pdf_pages) pages.emplace(request_.size);
   while (next(frame = render::Frame(), step)) {
     frame.status = status_line(step, dt);
-    pipeline_->writer.submit(request_.out / frame_name(name, count++),
-                             pipeline_->renderer.render(frame, camera, request_.overlays));
+    render::Renderer& renderer = pipeline_->renderer;
+    switch (request_.format) {
+      case FrameFormat::png:
+        pipeline_->writer.submit(request_.out / frame_name(name, count++),
+                                 renderer.render(frame, camera, request_.overlays));
+        break;
+      case FrameFormat::svg:
+        write_file_atomically(request_.out / frame_name(name, count++, "svg"),
+                              render::svg_document(renderer.paint(frame, camera, request_.overlays),
+                                                   request_.size, request_.background));
+        break;
+      case FrameFormat::pdf: {
+        const render::DrawList list = renderer.paint(frame, camera, request_.overlays);
+        if (pages) {
+          pages->add_page(list, request_.background);
+          ++count;
+          break;
+        }
+        render::PdfDocument one(request_.size);
+        one.add_page(list, request_.background);
+        write_file_atomically(request_.out / frame_name(name, count++, "pdf"), one.finish());
+        break;
+      }
+    }
   }
+  if (pages && count > 0) write_file_atomically(request_.out / (name + ".pdf"), pages->finish());
   return count;
 }
 

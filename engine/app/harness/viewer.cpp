@@ -152,6 +152,9 @@ std::size_t ViewerPage::write_page(const std::vector<ViewerRun>& runs, const Sto
   FrameRenderer renderer([&] {
     RenderRequest r = request_;
     r.out = frames;
+    r.format = FrameFormat::png;  // the page shows PNGs, whatever --format the frames have
+    r.pdf_pages = false;
+    r.background.transparent = false;
     return r;
   }());
   // the page as one script: data.js sets LAMINA_VIEWER before index.html's own script reads it
