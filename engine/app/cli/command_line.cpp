@@ -71,18 +71,23 @@ void add_run_options(CLI::App& run, RunOptions& o, std::string& explain_format) 
                               "render PNG frames into DIR: <scene>_0000.png shows step 0 (the state "
                               "at t = 0 and what step 0 solved), then one every --every steps")
                      ->type_name("DIR");
-  run.add_option("--every", o.every, "steps between frames")->type_name("K")->capture_default_str()
-      ->check(CLI::PositiveNumber)->needs(frames);
+  auto* every = run.add_option("--every", o.every, "steps between frames (of --frames and --video)")
+                    ->type_name("K")->capture_default_str()->check(CLI::PositiveNumber);
   auto* viewer = tutorial::add_viewer_options(
       run, o.viewer, o.viewer_steps,
       "write the step-through viewer into DIR: DIR/index.html shows every step, its phases, rows "
       "and sweeps, in a browser, from the file system (docs/viewer.md)");
   const std::vector<CLI::Option*> render_options = tutorial::add_render_options(run, o.render);
-  // the frames' options shape the viewer's frames too: each needs one or the other
-  run.callback([frames, viewer, render_options] {
+  // the frames' options shape the viewer's frames and the video too: each needs one of them
+  run.callback([frames, viewer, every, render_options] {
+    const CLI::Option* video = render_options.at(6);  // add_render_options' order
+    if (every->count() > 0 && frames->count() == 0 && video->count() == 0) {
+      throw CLI::ValidationError("--every needs --frames or --video");
+    }
+    if (frames->count() > 0 || viewer->count() > 0 || video->count() > 0) return;
     for (const CLI::Option* option : render_options) {
-      if (option->count() > 0 && frames->count() == 0 && viewer->count() == 0) {
-        throw CLI::ValidationError(option->get_name() + " needs --frames or --viewer");
+      if (option->count() > 0) {
+        throw CLI::ValidationError(option->get_name() + " needs --frames, --viewer or --video");
       }
     }
   });

@@ -110,9 +110,10 @@ std::string write_viewer(ViewerRecording& viewer, const Simulation& simulation, 
 // The renderer of --frames: its folder made and an OpenGL context open before the first step,
 // so that a folder that cannot be written, or no OpenGL, stops the run before it writes anything.
 std::unique_ptr<tutorial::FrameRenderer> frame_renderer(const RunOptions& o) {
-  if (!o.frames) return nullptr;
+  if (!o.frames && !o.render.video) return nullptr;
   tutorial::RenderRequest request = o.render;
-  request.out = *o.frames;
+  request.out = o.frames.value_or(std::filesystem::path());
+  request.write_frames = o.frames.has_value();  // --video alone: no frame files
   return std::make_unique<tutorial::FrameRenderer>(request);
 }
 
@@ -158,8 +159,14 @@ std::string step_span(long taken) {
 }
 
 // "12 frames -> out"
-std::string frames_kept(int count, const RunOptions& o) {
-  return tutorial::counted(count, "frame", "frames") + " -> " + o.frames->string();
+// `video_whole`: the video was finished (a run stopped while rendering leaves none).
+std::string frames_kept(int count, const RunOptions& o, bool video_whole = true) {
+  std::string kept;
+  if (o.frames) kept = tutorial::counted(count, "frame", "frames") + " -> " + o.frames->string();
+  if (o.render.video) {
+    kept += (kept.empty() ? "" : ", ") + (video_whole ? "video -> " + o.render.video->string() : std::string("no video"));
+  }
+  return kept;
 }
 
 void print_summary(const Simulation& simulation, const std::optional<TraceWriter>& trace,
@@ -167,7 +174,7 @@ void print_summary(const Simulation& simulation, const std::optional<TraceWriter
   std::cout << simulation.scene().name << ": " << tutorial::counted(simulation.steps_taken(), "step", "steps") << ", t = "
             << simulation.world().time() << " s";
   if (trace) std::cout << ", trace -> " << listed(trace->paths());
-  if (o.frames) std::cout << ", " << frames_kept(frames, o);
+  if (o.frames || o.render.video) std::cout << ", " << frames_kept(frames, o);
   if (!viewer.empty()) std::cout << ", " << viewer;
   std::cout << '\n';
 }
@@ -179,7 +186,7 @@ std::string kept_outputs(const Simulation& simulation, const RunOptions& o,
                          const std::string& viewer = "no viewer page") {
   std::string kept;
   if (trace) kept += "; trace -> " + listed(trace->paths()) + " holds " + step_span(simulation.steps_taken());
-  if (o.frames) kept += (kept.empty() ? "; " : ", ") + frames;
+  if (o.frames || o.render.video) kept += (kept.empty() ? "; " : ", ") + frames;
   if (o.viewer) kept += (kept.empty() ? "; " : ", ") + viewer;
   return kept;
 }
@@ -205,10 +212,10 @@ void run_scene(Scene scene, const RunOptions& o) {
     if (simulation.world().settings().step.pitfalls.has(p.pitfall)) solver += " · pitfall: " + p.name;
   }
   const std::string caption = (description.empty() ? name : name + " · " + description) + " · " + solver;
-  if (o.frames) recording.emplace(simulation.world(), o.every, caption);
+  if (o.frames || o.render.video) recording.emplace(simulation.world(), o.every, caption);
   std::optional<ViewerRecording> viewer;
   if (o.viewer) viewer.emplace(o, simulation, caption);
-  const long frame_count = (o.frames ? (steps + o.every - 1) / o.every : 0) + (o.viewer ? steps : 0);
+  const long frame_count = (recording ? (steps + o.every - 1) / o.every : 0) + (o.viewer ? steps : 0);
   ProgressBar progress(name, steps + frame_count);
   simulation.show_progress(progress);
   int frames = 0;
@@ -237,7 +244,7 @@ void run_scene(Scene scene, const RunOptions& o) {
       render_recording(simulation, *recording, *renderer, progress, frames);
     } catch (const RunStopped& stopped) {
       progress.finish();
-      throw RunStopped(stopped.what() + kept_outputs(simulation, o, trace, frames_kept(frames, o)),
+      throw RunStopped(stopped.what() + kept_outputs(simulation, o, trace, frames_kept(frames, o, false)),
                        stopped.exit_code());
     }
   }

@@ -35,6 +35,10 @@ struct RenderRequest {
   FrameFormat format = FrameFormat::png;                 // --format png|svg|pdf
   bool pdf_pages = false;                                // --pdf-pages: one PDF of every frame
   render::Background background{};                       // --background paper|transparent|#rrggbb
+  std::optional<std::filesystem::path> video{};          // --video FILE: .mp4, .webm or .gif
+  int fps = 30;                                          // --fps N of the video
+  bool write_frames = true;                              // false: the video alone, no frame files
+  bool video_per_scene = false;                          // FILE's stem + "_<scene>" (tutorials)
 };
 
 // "paper", "transparent" or "#rrggbb"; throws std::invalid_argument for anything else.
@@ -77,6 +81,8 @@ class FrameRenderer {
   void finish();
   // The camera render() fits to the world region `view`, for the frames' size and overlays.
   render::Camera camera(const render::Rect& view) const;
+  // The video of the scene `name` (request.video, or with video_per_scene its stem + "_name").
+  std::filesystem::path video_path(const std::string& name) const;
 
  private:
   struct Pipeline;

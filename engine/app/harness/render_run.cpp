@@ -12,6 +12,7 @@
 
 #include "app/harness/render_request.h"
 #include "app/harness/runs.h"
+#include "app/harness/video.h"
 #include "app/harness/viewer.h"
 #include "output/output_file.h"
 #include "render/frame_writer.h"
@@ -118,7 +119,17 @@ std::vector<CLI::Option*> add_render_options(CLI::App& app, RenderRequest& reque
       [&request](const std::string& text) { request.background = parse_background(text); },
       "behind the drawing: paper, transparent (SVG and PDF) or a colour #rrggbb");
   background->type_name("COLOUR")->default_str("paper")->check(checked_by(parse_background, "COLOUR"));
-  return {size, overlays, backend, format, pages, background};
+  CLI::Option* video = app.add_option_function<std::string>(
+                             "--video", [&request](const std::string& file) { request.video = file; },
+                             "also encode the frames as a video: FILE.mp4 (H.264), .webm (VP9) or "
+                             ".gif (by Debian's ffmpeg; docs/slides.md)")
+                           ->type_name("FILE");
+  CLI::Option* fps = app.add_option("--fps", request.fps, "frames per second of the video")
+                         ->type_name("N")
+                         ->capture_default_str()
+                         ->check(CLI::Range(1, 240))
+                         ->needs(video);
+  return {size, overlays, backend, format, pages, background, video, fps};
 }
 
 render::Background parse_background(const std::string& text) {
@@ -170,9 +181,16 @@ FrameRenderer::FrameRenderer(const RenderRequest& request) : request_(request) {
   if (request_.pdf_pages && request_.format != FrameFormat::pdf) {
     throw OutputError("--pdf-pages needs --format pdf");
   }
-  prepare_output_folder(request_.out);
+  if (request_.video) check_video(*request_.video, request_.size, request_.fps);
+  if (request_.write_frames) prepare_output_folder(request_.out);
   pipeline_ = std::make_unique<Pipeline>(request_);
   pipeline_->renderer.set_background(request_.background.colour);
+}
+
+std::filesystem::path FrameRenderer::video_path(const std::string& name) const {
+  if (!request_.video_per_scene) return *request_.video;
+  std::filesystem::path path = *request_.video;
+  return path.replace_filename(path.stem().string() + "_" + name + path.extension().string());
 }
 
 FrameRenderer::~FrameRenderer() = default;
@@ -186,9 +204,25 @@ int FrameRenderer::render(const std::string& name, const render::Rect& view, dou
   // --pdf-pages: every frame a page of <name>.pdf, written whole once the last is drawn
   std::optional<render::PdfDocument> pages;
   if (request_.pdf_pages) pages.emplace(request_.size);
+  // --video: the frames also go, as pixels, to ffmpeg
+  std::optional<VideoEncoder> video;
+  if (request_.video) video.emplace(video_path(name), request_.size, request_.fps);
   while (next(frame = render::Frame(), step)) {
     frame.status = status_line(step, dt);
     render::Renderer& renderer = pipeline_->renderer;
+    if (video) {
+      render::Image image = renderer.render(frame, camera, request_.overlays);
+      video->add(image);
+      if (!request_.write_frames) {
+        ++count;
+        continue;
+      }
+      if (request_.format == FrameFormat::png) {
+        pipeline_->writer.submit(request_.out / frame_name(name, count++), std::move(image));
+        continue;
+      }
+    }
+    if (!request_.write_frames) continue;
     switch (request_.format) {
       case FrameFormat::png:
         pipeline_->writer.submit(request_.out / frame_name(name, count++),
@@ -214,6 +248,7 @@ int FrameRenderer::render(const std::string& name, const render::Rect& view, dou
     }
   }
   if (pages && count > 0) write_file_atomically(request_.out / (name + ".pdf"), pages->finish());
+  if (video) video->finish();
   return count;
 }
 
@@ -227,7 +262,9 @@ render::Camera FrameRenderer::camera(const render::Rect& view) const {
 
 void render_scenes(const TutorialInfo& info, const Options& o,
                    const std::vector<SceneFactory>& scenes) {
-  FrameRenderer renderer(o.render);
+  RenderRequest request = o.render;
+  request.video_per_scene = scenes.size() > 1;  // --video FILE: FILE's stem + "_<scene>" each
+  FrameRenderer renderer(request);
   for (const SceneFactory& make : scenes) {
     const auto start = std::chrono::steady_clock::now();
     const auto scene = make(o);
