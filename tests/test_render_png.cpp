@@ -2,11 +2,13 @@
 // at known places (the background at the corners, a body's fill inside it).
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "render/backend.h"
 #include "render/png_codec.h"
 #include "render/renderer.h"
+#include "render/vector_output.h"
 #include "render_test_frame.h"
 
 namespace {
@@ -71,5 +73,50 @@ TEST_SUITE("PngCodec") {
     const Body& box = frame.bodies[0];
     const Vec2 inside = camera.to_pixels(box.centre + Vec2(-0.25, 0.25));
     CHECK(image.pixel(static_cast<int>(inside.x()), static_cast<int>(inside.y())) == rgb(box.fill));
+  }
+
+  TEST_CASE("a transparent frame has nothing where nothing is drawn, and over the paper it is the opaque frame") {
+    const auto context = open_context(default_backend());
+    Renderer renderer(*context, test_size);
+    const Overlays all = Overlays::parse("all");
+    const Camera camera = testing::test_camera(all);
+    const Frame frame = testing::full_frame();
+    const Image opaque = renderer.render(frame, camera, all);
+    renderer.set_background(Background{true, {}});
+    // through the PNG codec, as a file would hold it (RGBA)
+    const Image clear = decode_png(encode_png(renderer.render(frame, camera, all)));
+    REQUIRE(clear.alpha.size() == static_cast<std::size_t>(test_size.width) * test_size.height);
+    CHECK(opaque.alpha.empty());
+    // Exact: the corners lie in the margin, where nothing is drawn: opacity 0.
+    CHECK(clear.alpha.front() == 0);
+    CHECK(clear.alpha.back() == 0);
+    // Exact: inside the box only its opaque fill is drawn.
+    const Body& box = frame.bodies[0];
+    const Vec2 inside = camera.to_pixels(box.centre + Vec2(-0.25, 0.25));
+    const std::size_t at = static_cast<std::size_t>(inside.y()) * test_size.width + static_cast<std::size_t>(inside.x());
+    CHECK(clear.alpha[at] == 255);
+    CHECK(clear.pixel(static_cast<int>(inside.x()), static_cast<int>(inside.y())) == rgb(box.fill));
+    // Composited over the paper colour (straight alpha: c a + paper (1 − a)), every pixel is the
+    // opaque frame's, to 3 of 255 per channel: the colour taken back from colour × opacity loses
+    // up to 255 / (2 a) before it is multiplied by a again (≤ 1), plus each rounding (≤ 1 each).
+    int worst = 0;
+    long translucent = 0;
+    for (int y = 0; y < test_size.height; ++y) {
+      for (int x = 0; x < test_size.width; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * test_size.width + x;
+        const double a = clear.alpha[i] / 255.0;
+        translucent += clear.alpha[i] > 0 && clear.alpha[i] < 255;
+        const auto c = clear.pixel(x, y), o = opaque.pixel(x, y);
+        const std::array<std::uint8_t, 3> paper = rgb(palette::background);
+        for (int k = 0; k < 3; ++k) {
+          const double over = c[k] * a + paper[k] * (1.0 - a);
+          worst = std::max(worst, static_cast<int>(std::lround(std::abs(over - o[k]))));
+        }
+      }
+    }
+    MESSAGE("transparent over the paper against opaque: at most " << worst << " of 255 apart; "
+                                                                  << translucent << " translucent pixels");
+    CHECK(translucent > 1000);  // edges, text and the panels' 90 % white: the case is exercised
+    CHECK(worst <= 3);
   }
 }

@@ -11,6 +11,8 @@ struct Image {
   int width = 0;
   int height = 0;
   std::vector<std::uint8_t> rgb;  // width × height × 3 bytes, row 0 is the top row
+  std::vector<std::uint8_t> alpha{};  // width × height opacities; empty: opaque (every frame but
+                                    // those with --background transparent)
 
   std::array<std::uint8_t, 3> pixel(int x, int y) const {
     const std::size_t i = 3 * (static_cast<std::size_t>(y) * width + x);

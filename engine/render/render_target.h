@@ -18,9 +18,12 @@ class RenderTarget {
   RenderTarget& operator=(const RenderTarget&) = delete;
 
   // Binds the multisampled framebuffer and clears it to `background`.
-  void begin(Colour background) const;
-  // Resolves the samples (glBlitFramebuffer) and reads the pixels, top row first.
-  Image read() const;
+  // Clears to the background; `transparent` clears to nothing (opacity 0) instead.
+  void begin(Colour background, bool transparent = false) const;
+  // Resolves the samples (glBlitFramebuffer) and reads the pixels, top row first; with
+  // `with_alpha`, their opacity too, the colours taken back from the blend's premultiplied
+  // form (colour × opacity, over a cleared transparent black) to straight colour.
+  Image read(bool with_alpha = false) const;
 
  private:
   GLuint framebuffer(GLsizei samples, GLuint renderbuffer) const;

@@ -7,6 +7,7 @@
 #include "render/gl_program.h"
 #include "render/paint.h"
 #include "render/render_target.h"
+#include "render/vector_output.h"
 
 namespace lamina::render {
 
@@ -14,7 +15,7 @@ struct Renderer::Impl {
   GlApi gl;
   FrameSize size;
   Style style;
-  Colour background = palette::background;
+  Background background;
   Typesetter text;
   RenderTarget target;
   GLuint program = 0;
@@ -89,7 +90,7 @@ struct Renderer::Impl {
   }
 
   void draw(const Mesh& mesh) {
-    target.begin(background);
+    target.begin(background.colour, background.transparent);
     gl.UseProgram(program);
     gl.Uniform2f(gl.GetUniformLocation(program, "frame_size"), static_cast<float>(size.width),
                  static_cast<float>(size.height));
@@ -115,7 +116,7 @@ Renderer::Renderer(const GlContext& context, const FrameSize& size)
 
 Renderer::~Renderer() = default;
 
-void Renderer::set_background(Colour colour) { impl_->background = colour; }
+void Renderer::set_background(const Background& background) { impl_->background = background; }
 
 DrawList Renderer::paint(const Frame& frame, const Camera& camera, const Overlays& overlays) {
   return impl_->paint(frame, camera, overlays);
@@ -130,7 +131,7 @@ Image Renderer::rasterise(const DrawList& list) {
   tessellate(list, mesh, impl_->text);
   impl_->upload_new_glyphs();
   impl_->draw(mesh);
-  Image image = impl_->target.read();
+  Image image = impl_->target.read(impl_->background.transparent);
   impl_->check_errors();
   return image;
 }

@@ -10,6 +10,7 @@
 #include "render/gl_context.h"
 #include "render/image.h"
 #include "render/style.h"
+#include "render/vector_output.h"
 
 namespace lamina::render {
 
@@ -29,8 +30,9 @@ class Renderer {
   DrawList paint(const Frame& frame, const Camera& camera, const Overlays& overlays);
   // The commands drawn by OpenGL.
   Image rasterise(const DrawList& list);
-  // The colour behind the drawing (opaque; the paper colour unless set).
-  void set_background(Colour colour);
+  // What lies behind the drawing: the paper colour unless set; transparent gives images with
+  // an alpha plane (Image::alpha).
+  void set_background(const Background& background);
 
  private:
   struct Impl;

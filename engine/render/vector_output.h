@@ -16,7 +16,8 @@
 
 namespace lamina::render {
 
-// What lies behind the drawing: the paper colour, another colour, or nothing (transparent).
+// What lies behind the drawing: the paper colour, another colour, or nothing (transparent: a
+// PNG with an alpha channel, an SVG or PDF with no background).
 struct Background {
   bool transparent = false;
   Colour colour = palette::background;

@@ -175,8 +175,8 @@ struct FrameRenderer::Pipeline {
 };
 
 FrameRenderer::FrameRenderer(const RenderRequest& request) : request_(request) {
-  if (request_.format == FrameFormat::png && request_.background.transparent) {
-    throw OutputError("--background transparent: PNG frames are opaque; use --format svg or pdf");
+  if (request_.video && request_.background.transparent) {
+    throw OutputError("--background transparent: a video is opaque; leave --video out or the background in");
   }
   if (request_.pdf_pages && request_.format != FrameFormat::pdf) {
     throw OutputError("--pdf-pages needs --format pdf");
@@ -184,7 +184,7 @@ FrameRenderer::FrameRenderer(const RenderRequest& request) : request_(request) {
   if (request_.video) check_video(*request_.video, request_.size, request_.fps);
   if (request_.write_frames) prepare_output_folder(request_.out);
   pipeline_ = std::make_unique<Pipeline>(request_);
-  pipeline_->renderer.set_background(request_.background.colour);
+  pipeline_->renderer.set_background(request_.background);
 }
 
 std::filesystem::path FrameRenderer::video_path(const std::string& name) const {
