@@ -117,7 +117,7 @@ std::vector<CLI::Option*> add_render_options(CLI::App& app, RenderRequest& reque
   CLI::Option* background = app.add_option_function<std::string>(
       "--background",
       [&request](const std::string& text) { request.background = parse_background(text); },
-      "behind the drawing: paper, transparent (SVG and PDF) or a colour #rrggbb");
+      "behind the drawing: paper, transparent (PNG with alpha, SVG, PDF) or a colour #rrggbb");
   background->type_name("COLOUR")->default_str("paper")->check(checked_by(parse_background, "COLOUR"));
   CLI::Option* video = app.add_option_function<std::string>(
                              "--video", [&request](const std::string& file) { request.video = file; },
