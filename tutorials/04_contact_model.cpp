@@ -52,7 +52,7 @@ class Landing : public tutorial::Scene {
     ch4::draw_ground(frame);
     run_.draw(frame, 0.0, colour());
     frame.panels.push_back(run_.panel(render::Corner::bottom_left, colour()));
-    frame.legend_corner = render::Corner::top_right;
+    frame.legend_corner = render::Corner::bottom_right;
   }
 
   tutorial::Explanation explain() const override { return run_.explain(); }

@@ -55,6 +55,37 @@ void DrawList::text(std::string_view line, const TextStyle& style, const Vec2& o
   c.style = style;
 }
 
+std::vector<std::string> layout_overlaps(const std::vector<LayoutBox>& boxes) {
+  using Kind = LayoutBox::Kind;
+  const auto name = [](Kind k) {
+    switch (k) {
+      case Kind::body: return "body";
+      case Kind::legend: return "legend";
+      case Kind::panel: return "panel";
+      case Kind::label: return "label";
+    }
+    return "box";
+  };
+  // open rectangles: boxes that only touch along an edge do not overlap
+  const auto overlap = [](const Rect& a, const Rect& b) {
+    return a.min.x() < b.max.x() && b.min.x() < a.max.x() && a.min.y() < b.max.y() && b.min.y() < a.max.y();
+  };
+  const auto text_box = [](Kind k) { return k == Kind::legend || k == Kind::panel; };
+  std::vector<std::string> found;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+      const Kind a = boxes[i].kind, b = boxes[j].kind;
+      // a legend or panel must hide nothing; labels must not cover each other (a label beside
+      // its body may touch it: that is where it belongs)
+      const bool matters = text_box(a) || text_box(b) || (a == Kind::label && b == Kind::label);
+      if (!matters || !overlap(boxes[i].rect, boxes[j].rect)) continue;
+      found.push_back(std::string(name(a)) + " " + std::to_string(i) + " and " + name(b) + " " +
+                      std::to_string(j) + " overlap");
+    }
+  }
+  return found;
+}
+
 void tessellate(const DrawList& list, Mesh& mesh, Typesetter& text) {
   using Kind = DrawCommand::Kind;
   for (const DrawCommand& c : list.commands()) {

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "render/camera.h"
 #include "render/mesh.h"
 #include "render/typesetter.h"
 
@@ -37,6 +38,19 @@ struct DrawCommand {
   TextStyle style;
 };
 
+// Where the painters put what must not hide the scene (slides' layout: docs/slides.md): each
+// body's bounding box as drawn, the legend's and every panel's box, each label's text box; in
+// pixels, clipped to the frame.
+struct LayoutBox {
+  enum class Kind { body, legend, panel, label };
+  Kind kind = Kind::body;
+  Rect rect;
+};
+
+// The boxes that overlap where they must not: a legend or panel over a body, a label, or each
+// other, and two labels over each other. Each as "legend over body 2".
+std::vector<std::string> layout_overlaps(const std::vector<LayoutBox>& boxes);
+
 class DrawList {
  public:
   void fill_convex(const std::vector<Vec2>& polygon, Colour colour);
@@ -49,11 +63,16 @@ class DrawList {
   // One line of text with its baseline starting at `origin` (Typesetter::draw's rounding).
   void text(std::string_view line, const TextStyle& style, const Vec2& origin);
 
+  // Records a box of the layout (not drawn).
+  void mark(LayoutBox::Kind kind, const Rect& rect) { layout_.push_back({kind, rect}); }
+
   const std::vector<DrawCommand>& commands() const { return commands_; }
+  const std::vector<LayoutBox>& layout() const { return layout_; }
 
  private:
   DrawCommand& add(DrawCommand::Kind kind, std::vector<Vec2> points, Colour colour);
   std::vector<DrawCommand> commands_;
+  std::vector<LayoutBox> layout_;
 };
 
 // The OpenGL path: every command as triangles (tessellate.h) and glyph rectangles, in order.

@@ -31,8 +31,14 @@ struct Canvas {
   Vec2 px(const Vec2& world) const { return camera.to_pixels(world); }
   // Draws one line of text whose vertical middle sits at `anchor.y`; `align_x` 0 puts its left
   // end at anchor.x, 0.5 its middle, 1 its right end.
-  void write(std::string_view line, const TextStyle& style, const Vec2& anchor,
+  // Returns the line's box, ascender to descender.
+  Rect write(std::string_view line, const TextStyle& style, const Vec2& anchor,
              double align_x = 0.0) const;
+  // The box of a label's line, kept in the layout (draw_list.h).
+  void write_label(std::string_view line, const TextStyle& style, const Vec2& anchor,
+                   double align_x = 0.0) const;
+  // A box of the layout, clipped to the frame.
+  void mark(LayoutBox::Kind kind, const Rect& box) const;
 };
 
 // The metre grid behind everything (the axes overlay).
@@ -54,6 +60,8 @@ void draw_text_box(const Canvas& canvas, const Rect& box);
 double panel_padding(const Style& style);
 // The top-left pixel of a block of `size` placed in a corner of the drawing area.
 Vec2 corner_position(const Canvas& canvas, Corner corner, const Vec2& size);
+// The same in a given drawing area (Style::drawing_area).
+Vec2 corner_position(const Rect& area, Corner corner, const Vec2& size);
 
 // Markers shared by the overlays, the 3D points and the legend, centred on a pixel.
 void draw_point(const Canvas& canvas, const Vec2& at, Colour colour);  // a disc in an ink ring

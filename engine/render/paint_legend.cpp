@@ -102,6 +102,7 @@ void paint_legend(const Frame& frame, Canvas& c) {
   const Vec2 size(sample + gap + text_width + 2.0 * pad, entries.size() * row + 2.0 * pad);
   const Vec2 corner = corner_position(c, frame.legend_corner, size);
   draw_text_box(c, {corner, corner + size});
+  c.mark(LayoutBox::Kind::legend, {corner, corner + size});
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const Vec2 left = corner + Vec2(pad, pad + (i + 0.5) * row);
     draw_sample(c, entries[i], left, sample);

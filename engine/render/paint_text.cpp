@@ -43,6 +43,7 @@ void paint_panel(Canvas& c, const Panel& panel) {
   const Vec2 size = panel_size(c, panel);
   const Vec2 corner = corner_position(c, panel.corner, size);
   draw_text_box(c, {corner, corner + size});
+  c.mark(LayoutBox::Kind::panel, {corner, corner + size});
   const double pad = panel_padding(c.style);
   double y = corner.y() + pad;
   if (!panel.title.empty()) {
@@ -61,17 +62,62 @@ void paint_panel(Canvas& c, const Panel& panel) {
 
 }  // namespace
 
-void Canvas::write(std::string_view line, const TextStyle& style, const Vec2& anchor,
+Rect Canvas::write(std::string_view line, const TextStyle& style, const Vec2& anchor,
                    double align_x) const {
   const LineMetrics m = text.metrics(style.face, style.px);
-  const double left = anchor.x() - align_x * text.width(line, style.face, style.px);
-  draw.text(line, style, Vec2(left, anchor.y() + 0.5 * (m.ascender - m.descender)));
+  const double width = text.width(line, style.face, style.px);
+  const double left = anchor.x() - align_x * width;
+  const double baseline = anchor.y() + 0.5 * (m.ascender - m.descender);
+  draw.text(line, style, Vec2(left, baseline));
+  return {Vec2(left, baseline - m.ascender), Vec2(left + width, baseline + m.descender)};
+}
+
+void Canvas::write_label(std::string_view line, const TextStyle& style, const Vec2& anchor,
+                         double align_x) const {
+  if (line.empty()) return;
+  // A label goes where it is asked unless a label drawn before covers that place; then a line
+  // lower, or higher, or two lower: labels never cover each other.
+  const LineMetrics m = text.metrics(style.face, style.px);
+  const double width = text.width(line, style.face, style.px), height = m.ascender + m.descender;
+  const auto box_at = [&](const Vec2& at) {
+    const double left = at.x() - align_x * width, top = at.y() + 0.5 * (m.ascender - m.descender) - m.ascender;
+    return Rect{Vec2(left, top), Vec2(left + width, top + height)};
+  };
+  const auto free = [&](const Rect& box) {
+    for (const LayoutBox& b : draw.layout()) {
+      if (b.kind != LayoutBox::Kind::label) continue;
+      if (box.min.x() < b.rect.max.x() && b.rect.min.x() < box.max.x() && box.min.y() < b.rect.max.y() &&
+          b.rect.min.y() < box.max.y()) {
+        return false;
+      }
+    }
+    return true;
+  };
+  Vec2 at = anchor;
+  for (const double shift : {0.0, 1.0, -1.0, 2.0, -2.0}) {
+    const Vec2 candidate = anchor + Vec2(0.0, shift * height);
+    if (free(box_at(candidate))) {
+      at = candidate;
+      break;
+    }
+  }
+  mark(LayoutBox::Kind::label, write(line, style, at, align_x));
+}
+
+void Canvas::mark(LayoutBox::Kind kind, const Rect& box) const {
+  const Rect clipped{box.min.cwiseMax(Vec2::Zero()),
+                     box.max.cwiseMin(Vec2(size.width, size.height))};
+  if (clipped.min.x() >= clipped.max.x() || clipped.min.y() >= clipped.max.y()) return;  // off the frame
+  draw.mark(kind, clipped);
 }
 
 double panel_padding(const Style& style) { return 0.6 * style.margin; }
 
 Vec2 corner_position(const Canvas& c, Corner corner, const Vec2& size) {
-  const Rect area = c.style.drawing_area(c.size, c.overlays.has(Overlay::axes));
+  return corner_position(c.style.drawing_area(c.size, c.overlays.has(Overlay::axes)), corner, size);
+}
+
+Vec2 corner_position(const Rect& area, Corner corner, const Vec2& size) {
   switch (corner) {
     case Corner::top_right:
       return {area.max.x() - size.x(), area.min.y()};

@@ -29,6 +29,12 @@ void paint_body(Canvas& c, const Body& body) {
       box ? box_corners(c, body) : circle_points(centre, body.radius * c.camera.pixels_per_metre());
   c.draw.fill_convex(outline, body.fill);
   c.draw.stroke_convex(outline, c.style.outline, palette::ink);
+  Rect bounds{outline[0], outline[0]};
+  for (const Vec2& p : outline) {
+    bounds.min = bounds.min.cwiseMin(p);
+    bounds.max = bounds.max.cwiseMax(p);
+  }
+  c.mark(LayoutBox::Kind::body, bounds);
   if (body.fixed) return;
   const Vec2 mark = c.px(body.centre + reach * direction(body.angle));
   c.draw.stroke_segment(centre, mark, c.style.line, palette::ink);
@@ -70,14 +76,14 @@ void paint_arrow(Canvas& c, const Arrow& arrow) {
   if (arrow.label.empty()) return;
   const Vec2 d = (to - from).norm() > 0.0 ? Vec2((to - from).normalized()) : Vec2::UnitX();
   const TextStyle style{Typeface::sans, c.style.text_px, arrow.colour};
-  c.write(arrow.label, style, to + d * (0.6 * c.style.text_px), d.x() < -0.3 ? 1.0 : 0.0);
+  c.write_label(arrow.label, style, to + d * (0.6 * c.style.text_px), d.x() < -0.3 ? 1.0 : 0.0);
 }
 
 void paint_label(Canvas& c, const Label& label) {
   const double align = label.align == Label::Align::left     ? 0.0
                        : label.align == Label::Align::centre ? 0.5
                                                              : 1.0;
-  c.write(label.text, {Typeface::sans, c.style.text_px, label.colour}, c.px(label.at), align);
+  c.write_label(label.text, {Typeface::sans, c.style.text_px, label.colour}, c.px(label.at), align);
 }
 
 void paint_path(Canvas& c, const Path& path) {
@@ -92,7 +98,7 @@ void paint_point(Canvas& c, const Point3& point, const ObliqueProjection& projec
   const Vec2 at = c.px(projection.project(point.at));
   draw_point(c, at, point.colour);
   if (point.label.empty()) return;
-  c.write(point.label, {Typeface::sans, c.style.text_px, point.colour},
+  c.write_label(point.label, {Typeface::sans, c.style.text_px, point.colour},
           at + Vec2(1.8 * c.style.marker, 0.0));
 }
 

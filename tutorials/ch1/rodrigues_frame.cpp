@@ -58,8 +58,10 @@ class RodriguesFrame : public tutorial::Scene {
     frame.arrows3.push_back({Vec3::Zero(), a, ink, "a"});
     frame.arrows3.push_back({Vec3::Zero(), b, ink, "b"});
     frame.arrows3.push_back({Vec3::Zero(), d, ink, "d"});
-    frame.arrows3.push_back({Vec3::Zero(), v, blue, "v"});
-    frame.arrows3.push_back({Vec3::Zero(), turned, vermillion, "R v"});
+    // near θ = 0 and 2π the two tips meet: one label names both (labels never cover each other)
+    const bool one_tip = (turned - v).norm() < 0.3;
+    frame.arrows3.push_back({Vec3::Zero(), v, blue, one_tip ? "v, R v" : "v"});
+    frame.arrows3.push_back({Vec3::Zero(), turned, vermillion, one_tip ? "" : "R v"});
     frame.points3.push_back({centre, ink, ""});
     frame.legend = {{render::LegendEntry::Sample::arrow, ink, "a, b, d: orthonormal, d the axis"},
                     {render::LegendEntry::Sample::arrow, blue, "v"},

@@ -74,7 +74,7 @@ std::vector<std::vector<Vec3>> box_edges(const Mat3& rotation) {
 class TurningParticle : public tutorial::Scene {
  public:
   tutorial::SceneInfo info() const override {
-    return {"turning_particle", dt, 61, 2, {Vec2(-2.6, -1.3), Vec2(4.7, 2.1)}};
+    return {"turning_particle", dt, 61, 2, {Vec2(-2.6, -1.3), Vec2(4.9, 2.2)}};
   }
 
   void step() override { ++step_; }

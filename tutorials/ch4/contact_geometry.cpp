@@ -55,7 +55,7 @@ class ContactGeometry : public tutorial::Scene {
     for (const ContactInfo& c : world_.report().contacts()) {
       frame.contacts.push_back(view::contact_view(c));
     }
-    frame.legend_corner = render::Corner::top_right;
+    frame.legend_corner = render::Corner::bottom_right;
     const std::optional<ContactInfo> shown = shown_contact();
     if (!shown) return;
     const Geometry geo = geometry(*shown);

@@ -134,6 +134,7 @@ class Overlay : public tutorial::Scene {
     const double width = least.size().x();
     r.min.x() = std::max(r.min.x(), least.min.x() - 0.5 * width);
     r.max.x() = std::min(r.max.x(), least.max.x() + 0.5 * width);
+    r.max.y() += c_.headroom;
     return r;
   }
 
@@ -159,6 +160,8 @@ Comparison table_comparison(const TableScene& s) {
   c.runs = [s]() -> const std::vector<LabRun>& { return lab_runs(s); };
   const bool heavy = s.scene.rfind("heavy-on-light", 0) == 0;
   const bool chain = s.scene == "ball-and-chain:100";
+  // the chain's ball swings up to the pin's height on both sides: room above it for the numbers
+  if (chain) c.headroom = 2.0;
   c.measure = heavy ? "deepest overlap (mm)"
               : chain ? "pin to ball past its rest length (%)"
               : s.scene == "vertical-stack:20" ? "top box moved (m)" : "apex moved (m)";

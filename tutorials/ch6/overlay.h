@@ -21,6 +21,7 @@ struct Comparison {
   lamina::Scene scene;                // its bodies' shapes, which are static, its Δt
   lamina::Scene explained;            // what --explain K steps: the scene by one method
   render::Rect view;                  // the least region the frames show, in m
+  double headroom = 0.0;              // added above the bodies' highest reach, in m (for a panel)
   std::vector<Contender> who;         // one per run: its name and colour
   std::function<const std::vector<LabRun>&()> runs;  // the runs, simulated once
   std::string measure;                // what the panel and plot follow, with its unit

@@ -123,8 +123,12 @@ void render_recording(const Simulation& simulation, const FrameRecording& record
                       tutorial::FrameRenderer& renderer, ProgressBar& progress, int& rendered) {
   std::size_t next = 0;
   rendered = 0;
+  // the legend where no body goes in the whole run (docs/slides.md)
+  const tutorial::FrameRenderer::LegendPlace place = renderer.place_legend(
+      recording.frames().size(), [&](std::size_t k) -> const render::Frame& { return recording.frames()[k].frame; },
+      recording.view(simulation.world()));
   try {
-    renderer.render(tutorial::file_prefix(simulation.scene().name), recording.view(simulation.world()),
+    renderer.render(tutorial::file_prefix(simulation.scene().name), place.view,
                     simulation.world().settings().step.dt, [&](render::Frame& frame, long& step) {
                       if (next == recording.frames().size()) return false;
                       if (const int signal = stop_signal()) {
@@ -133,6 +137,7 @@ void render_recording(const Simulation& simulation, const FrameRecording& record
                                              ", while rendering frame " + std::to_string(next));
                       }
                       frame = recording.frames()[next].frame;
+                      frame.legend_corner = place.corner;
                       step = recording.frames()[next++].step;
                       progress.advance();
                       return true;

@@ -39,6 +39,7 @@ struct RenderRequest {
   int fps = 30;                                          // --fps N of the video
   bool write_frames = true;                              // false: the video alone, no frame files
   bool video_per_scene = false;                          // FILE's stem + "_<scene>" (tutorials)
+  bool check_layout = false;                             // --check-layout: record every overlap
 };
 
 // "paper", "transparent" or "#rrggbb"; throws std::invalid_argument for anything else.
@@ -81,6 +82,22 @@ class FrameRenderer {
   void finish();
   // The camera render() fits to the world region `view`, for the frames' size and overlays.
   render::Camera camera(const render::Rect& view) const;
+  // Where the legend of a run's frames goes (docs/slides.md): the first of the corners top right,
+  // top left, bottom right and bottom left whose legend box meets no body's, panel's or label's
+  // box (as painted) in any of the `count` frames `frame_at` gives; when every corner meets one, the view grows
+  // upward by the legend's height, up to 4 times, for top right to be free. Returns the corner
+  // and the view to render with.
+  struct LegendPlace {
+    render::Corner corner = render::Corner::top_right;
+    render::Rect view;
+  };
+  LegendPlace place_legend(std::size_t count, const std::function<const render::Frame&(std::size_t)>& frame_at,
+                           render::Rect view);
+  // With request.check_layout, each frame rendered whose legend, panels or labels cover a body
+  // or each other: "<name>_0012: legend 3 and body 0 overlap" (render::layout_overlaps).
+  const std::vector<std::string>& layout_problems() const { return layout_problems_; }
+  // The layout boxes (render/draw_list.h) of `frame` as render() would draw it in `view`.
+  std::vector<render::LayoutBox> layout(const render::Frame& frame, const render::Rect& view);
   // The video of the scene `name` (request.video, or with video_per_scene its stem + "_name").
   std::filesystem::path video_path(const std::string& name) const;
 
@@ -88,6 +105,7 @@ class FrameRenderer {
   struct Pipeline;
   RenderRequest request_;
   std::unique_ptr<Pipeline> pipeline_;
+  std::vector<std::string> layout_problems_;
 };
 
 }  // namespace lamina::tutorial

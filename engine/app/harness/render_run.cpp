@@ -16,6 +16,7 @@
 #include "app/harness/viewer.h"
 #include "output/output_file.h"
 #include "render/frame_writer.h"
+#include "render/paint.h"
 #include "render/renderer.h"
 
 namespace lamina::tutorial {
@@ -187,6 +188,47 @@ FrameRenderer::FrameRenderer(const RenderRequest& request) : request_(request) {
   pipeline_->renderer.set_background(request_.background);
 }
 
+FrameRenderer::LegendPlace FrameRenderer::place_legend(
+    std::size_t count, const std::function<const render::Frame&(std::size_t)>& frame_at, render::Rect view) {
+  using render::Corner;
+  using Kind = render::LayoutBox::Kind;
+  const render::Rect area = render::Style::for_size(request_.size)
+                                .drawing_area(request_.size, request_.overlays.has(render::Overlay::axes));
+  for (int grown = 0;; ++grown) {
+    const render::Camera camera = this->camera(view);
+    // every corner free until a frame's legend there meets one of its bodies
+    std::array<bool, 4> free{true, true, true, true};
+    double legend_height = 0.0;
+    for (std::size_t k = 0; k < count; ++k) {
+      const render::DrawList list = pipeline_->renderer.paint(frame_at(k), camera, request_.overlays);
+      Vec2 size = Vec2::Zero();
+      for (const render::LayoutBox& b : list.layout()) {
+        if (b.kind == Kind::legend) size = b.rect.max - b.rect.min;
+      }
+      if (size.isZero()) continue;  // no legend in this frame
+      legend_height = std::max(legend_height, size.y());
+      for (const Corner corner : {Corner::top_right, Corner::top_left, Corner::bottom_right, Corner::bottom_left}) {
+        const Vec2 at = render::corner_position(area, corner, size);
+        for (const render::LayoutBox& b : list.layout()) {
+          const bool meets = b.kind != Kind::legend && at.x() < b.rect.max.x() && b.rect.min.x() < at.x() + size.x() &&
+                             at.y() < b.rect.max.y() && b.rect.min.y() < at.y() + size.y();
+          if (meets) free[static_cast<std::size_t>(corner)] = false;
+        }
+      }
+    }
+    for (const Corner corner : {Corner::top_right, Corner::top_left, Corner::bottom_right, Corner::bottom_left}) {
+      if (free[static_cast<std::size_t>(corner)]) return {corner, view};
+    }
+    if (grown == 4) return {Corner::top_right, view};  // as free as it gets
+    // room above the scene for the legend: its height in metres, at the current scale
+    view.max.y() += (legend_height + 0.5 * area.size().y() / 10.0) / camera.pixels_per_metre();
+  }
+}
+
+std::vector<render::LayoutBox> FrameRenderer::layout(const render::Frame& frame, const render::Rect& view) {
+  return pipeline_->renderer.paint(frame, camera(view), request_.overlays).layout();
+}
+
 std::filesystem::path FrameRenderer::video_path(const std::string& name) const {
   if (!request_.video_per_scene) return *request_.video;
   std::filesystem::path path = *request_.video;
@@ -210,6 +252,15 @@ int FrameRenderer::render(const std::string& name, const render::Rect& view, dou
   while (next(frame = render::Frame(), step)) {
     frame.status = status_line(step, dt);
     render::Renderer& renderer = pipeline_->renderer;
+    if (request_.check_layout) {  // paint and check; draw and write nothing
+      for (const std::string& overlap : render::layout_overlaps(renderer.paint(frame, camera, request_.overlays).layout())) {
+        char index[16];
+        std::snprintf(index, sizeof index, "_%04d", count);
+        layout_problems_.push_back(name + index + ": " + overlap);
+      }
+      ++count;
+      continue;
+    }
     if (video) {
       render::Image image = renderer.render(frame, camera, request_.overlays);
       video->add(image);
@@ -287,6 +338,12 @@ void render_scenes(const TutorialInfo& info, const Options& o,
         "encode, write) -> %s\n",
         info.name.c_str(), frames, s.name.c_str(), o.render.size.width, o.render.size.height,
         seconds.count(), frames / seconds.count(), o.render.out.c_str());
+  }
+  if (!renderer.layout_problems().empty()) {
+    std::string list;
+    for (const std::string& p : renderer.layout_problems()) list += "\n  " + p;
+    throw std::runtime_error("--check-layout: " + std::to_string(renderer.layout_problems().size()) +
+                             " overlaps:" + list);
   }
 }
 

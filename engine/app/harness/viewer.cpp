@@ -163,14 +163,17 @@ std::size_t ViewerPage::write_page(const std::vector<ViewerRun>& runs, const Sto
     const ViewerRun& run = runs[i];
     const std::string prefix = frame_prefix(i, run.scene_);
     std::size_t next = 0;
-    renderer.render(prefix, run.view_, run.dt_, [&](render::Frame& frame, long& step) {
+    const FrameRenderer::LegendPlace place = renderer.place_legend(
+        run.frames_.size(), [&](std::size_t k) -> const render::Frame& { return run.frames_[k]; }, run.view_);
+    renderer.render(prefix, place.view, run.dt_, [&](render::Frame& frame, long& step) {
       if (next == run.frames_.size()) return false;
       if (stop) stop();
       frame = run.frames_[next];
+      frame.legend_corner = place.corner;
       step = static_cast<long>(next++);
       return true;
     });
-    const render::Camera camera = renderer.camera(run.view_);
+    const render::Camera camera = renderer.camera(place.view);
     const Vec2 origin = camera.to_pixels(Vec2::Zero());
     const std::optional<std::array<long, 2>> detailed = run.detailed();
     Json head = {{"program", run.program_},
