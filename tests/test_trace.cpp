@@ -154,6 +154,17 @@ TEST_SUITE("Trace") {
     }
   }
 
+  TEST_CASE("a JSON trace escapes what JSON asks of a name, and reads it back whole") {
+    // a name with a quote, a backslash, a tab and non-ASCII text: escaped exactly as RFC 8259
+    // asks (the quote and backslash by a backslash, the control character as \u0009), read back
+    // by nlohmann-json (parse_trace_line), an independent parser
+    const std::string name = "a\"b\\c\td 상자";
+    const TraceStep step{3, 0.5, {{name, {1.0, 2.0}, 0.0, {0.0, 0.0}, 0.0}}, {}};
+    const std::string line = trace_json_line(step);
+    CHECK(line.find(R"("name":"a\"b\\c\u0009d 상자")") != std::string::npos);
+    CHECK(parse_trace_line(line).bodies.at(0).name == name);
+  }
+
   TEST_CASE("a CSV field holding a comma or a quote is quoted") {
     const TraceStep step{3, 0.5, {{"a,\"b\"", {1.0, 2.0}, 0.0, {0.0, 0.0}, 0.0}}, {}};
     CHECK(trace_csv_body_rows(step) == "3,0.5,\"a,\"\"b\"\"\",1.0,2.0,0.0,0.0,0.0,0.0\n");

@@ -1,6 +1,7 @@
 #include "trace/trace_json.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -41,7 +42,26 @@ class LineWriter {
     number(v[1]);
     out_ += ']';
   }
-  void text(const std::string& s) { out_ += Json(s).dump(); }  // quoted and escaped
+  // Quoted, with '"', '\\' and control characters escaped as JSON asks (RFC 8259, 7); the
+  // rest, UTF-8 included, as it is. (nlohmann's dump, one value per string, cost a tenth of the
+  // trace's time on a pyramid.)
+  void text(const std::string& s) {
+    out_ += '"';
+    for (const char ch : s) {
+      const auto c = static_cast<unsigned char>(ch);
+      if (c == '"' || c == '\\') {
+        out_ += '\\';
+        out_ += ch;
+      } else if (c < 0x20) {
+        char escaped[8];
+        std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+        out_ += escaped;
+      } else {
+        out_ += ch;
+      }
+    }
+    out_ += '"';
+  }
   void raw(const char* s) { out_ += s; }
 
  private:
