@@ -31,7 +31,8 @@ class Scene {
   // What the engine computed in the last step (the initial state before the first).
   virtual Explanation explain() const = 0;
   // What the last step solved, for the step-through viewer: the bodies, rows, sweeps, contacts
-  // and joints (the harness adds the explanation and the frame). Scenes without them add none.
+  // and joints, and the explanation when the scene makes it here (else the harness adds
+  // explain()); the harness adds the frame. Scenes without them add none.
   virtual void record(ViewerStep& /*step*/) const {}
   // Writes what the run recorded (CSV data, plots) into `folder` after the last frame.
   virtual void write_data(const std::filesystem::path& /*folder*/) const {}

@@ -23,8 +23,9 @@ void view_scenes(const TutorialInfo& info, const Options& o, const std::vector<S
     for (long k = 0; k <= last; ++k) {
       if (k > 0) scene->step();
       ViewerStep step;
-      step.phases = scene->explain();
       scene->record(step);
+      // a scene that records its step brings its explanation with it; one explanation a step
+      if (step.phases.empty()) step.phases = scene->explain();
       render::Frame frame;
       scene->draw(frame);
       run.add(step, std::move(frame));

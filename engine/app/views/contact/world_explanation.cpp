@@ -178,11 +178,12 @@ tutorial::ViewerStep viewer_step(const World& world, const WorldReport& report,
   for (const RigidBody& body : world.bodies()) step.after.push_back(viewer_body(body, g));
   add_viewer_rows(report.velocity, row_titles(world, report, names), step);
   step.method = world.settings().solver;
+  const std::vector<ContactInfo> infos = report.contacts();  // in pair order, as below
   int index = 0;
   for (const ContactPair& pair : report.pairs) {
     for (int k = 0; k < pair.count; ++k, ++index) {
       const Contact& c = pair.contacts[k];
-      const ContactInfo info = contact_infos({pair})[static_cast<std::size_t>(k)];
+      const ContactInfo& info = infos.at(static_cast<std::size_t>(index));
       tutorial::ViewerContact view;
       view.bodies = {pair.bodies.first, pair.bodies.second};
       view.x = info.point.x();
