@@ -3,6 +3,8 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -28,6 +30,12 @@ const CachedPoints none{};
 const TieRule tie;  // the cache's default: ties broken within 5e-4 m
 
 // A contact with this normal (body 1 → body 2), depth and deepest point, each within `tolerance`.
+// The corners of a box at a pose, world frame.
+std::array<Vec2, 4> core_vertices(const Shape& box, const Pose2& p) {
+  const Convex core = core_of(box, p);
+  return {core.vertices[0], core.vertices[1], core.vertices[2], core.vertices[3]};
+}
+
 void check_collision(const std::optional<Collision>& c, const Vec2& normal, double depth,
                      const Vec2& point, double tolerance) {
   REQUIRE(c);
@@ -195,6 +203,139 @@ TEST_SUITE("Collision") {
     REQUIRE(same);
     CHECK(same->normal == Vec2(0.0, 1.0));  // concentric: pushed up by convention
   }
+
+  TEST_CASE("box–box's separating axes agree with GJK/EPA on random poses: depth and normal") {
+    // The fast path and the general one on the same pairs, the box as a 4-vertex polygon. Both
+    // measure the least penetration over the boxes' face normals (in 2D EPA's answer is a face
+    // normal of one of them): they agree to the rounding of a few dot products. Pairs whose two
+    // best axes are within 1e-6 of each other may pick either normal: only their depths count.
+    std::mt19937 rng(20);
+    std::uniform_real_distribution<double> half(0.05, 1.5), angle(-M_PI, M_PI), at(-1.0, 1.0);
+    const TieRule first{false};  // the deepest vertex itself, no midpoint
+    int compared = 0, normals = 0, shallow = 0;
+    for (int k = 0; k < 5000; ++k) {
+      const Shape a = Shape::box(half(rng), half(rng));
+      const Shape b = Shape::box(half(rng), half(rng));
+      const Pose2 pa = pose(at(rng), at(rng), angle(rng));
+      const Pose2 pb = pose(at(rng), at(rng), angle(rng));
+      const std::optional<Collision> fast = collide_boxes(a, pa, b, pb, none, first);
+      const Shape qa = Shape::polygon({{-a.half_extents.x(), -a.half_extents.y()},
+                                       {a.half_extents.x(), -a.half_extents.y()},
+                                       {a.half_extents.x(), a.half_extents.y()},
+                                       {-a.half_extents.x(), a.half_extents.y()}});
+      const Shape qb = Shape::polygon({{-b.half_extents.x(), -b.half_extents.y()},
+                                       {b.half_extents.x(), -b.half_extents.y()},
+                                       {b.half_extents.x(), b.half_extents.y()},
+                                       {-b.half_extents.x(), b.half_extents.y()}});
+      const std::optional<Collision> general = collide_convex(qa, pa, qb, pb, none, first);
+      REQUIRE(fast.has_value() == general.has_value());
+      if (!fast) continue;
+      ++compared;
+      CHECK(general->depth == doctest::Approx(fast->depth).epsilon(1e-9).scale(1.0));
+      // EPA's own depth, the least move apart, equals the deepest point's while the overlap is
+      // shallower than half the smaller box. Deeper, a long box can cross the other with only a
+      // shallow corner inside it, and that corner is the deepest point both paths return
+      // (Fig 4-2's point lies inside the other body), not the least move apart.
+      const double smallest = std::min({a.half_extents.minCoeff(), b.half_extents.minCoeff()});
+      const Convex ca = core_of(a, pa), cb = core_of(b, pb);
+      const EpaResult e = epa(ca, cb, gjk(ca, cb));
+      if (e.depth < 0.5 * smallest) {
+        CHECK(e.depth == doctest::Approx(fast->depth).epsilon(1e-9).scale(1.0));
+        ++shallow;
+      }
+      // the second-best axis of the box pair, to tell a clear normal from a tie
+      const Vec2 n = fast->normal;
+      double runner_up = std::numeric_limits<double>::infinity();
+      for (const Vec2& axis : {Vec2(pa.R.col(0)), Vec2(pa.R.col(1)), Vec2(pb.R.col(0)), Vec2(pb.R.col(1))}) {
+        if (std::abs(std::abs(axis.dot(n)) - 1.0) < 1e-12) continue;
+        double lo = 1e300, hi = -1e300, lo2 = 1e300, hi2 = -1e300;
+        for (const Vec2& v : core_vertices(a, pa)) { lo = std::min(lo, axis.dot(v)); hi = std::max(hi, axis.dot(v)); }
+        for (const Vec2& v : core_vertices(b, pb)) { lo2 = std::min(lo2, axis.dot(v)); hi2 = std::max(hi2, axis.dot(v)); }
+        runner_up = std::min(runner_up, std::min(hi, hi2) - std::max(lo, lo2));
+      }
+      if (runner_up - fast->depth < 1e-6) continue;
+      ++normals;
+      CHECK((general->normal - fast->normal).norm() <= 1e-9);
+    }
+    CHECK(compared > 1000);  // the poses overlap often enough for the comparison to mean something
+    CHECK(normals > 900);
+    CHECK(shallow > 200);
+  }
+
+  TEST_CASE("a hexagon resting on the ground: both bottom corners tie, the first contact is their midpoint") {
+    std::vector<Vec2> hexagon;
+    for (int k = 0; k < 6; ++k) hexagon.push_back(0.5 * Vec2(std::cos(k * M_PI / 3), std::sin(k * M_PI / 3)));
+    const Shape hex = Shape::polygon(hexagon);
+    const Shape ground = Shape::box(5.0, 0.5);
+    // Resting on the edge between vertices 4 and 5 (at 240° and 300°), sunk 0.01 m: the flat
+    // bottom lies √3/4 below the centre.
+    const double apothem = 0.5 * std::sqrt(3.0) / 2.0;
+    const Pose2 at = pose(0.2, apothem - 0.01);
+    const std::optional<Collision> first = collide(ground, pose(0.0, -0.5), hex, at, none, tie);
+    check_collision(first, Vec2(0.0, 1.0), 0.01, Vec2(0.2, -0.01), exact);
+    // With one of the bottom corners cached, the other one.
+    CachedPoints cached;
+    cached.points[0] = at.to_world(hexagon[4]);
+    cached.count = 1;
+    const std::optional<Collision> second = collide(ground, pose(0.0, -0.5), hex, at, cached, tie);
+    check_collision(second, Vec2(0.0, 1.0), 0.01, at.to_world(hexagon[5]), exact);
+  }
+
+  TEST_CASE("a capsule lying on the ground: the normal up, the depth ρ − height, both caps tie") {
+    const Shape capsule = Shape::capsule(0.25, 1.0);
+    const Shape ground = Shape::box(5.0, 0.5);
+    const Pose2 at = pose(-0.3, 0.25 - 0.02);  // sunk 0.02 m
+    const std::optional<Collision> c = collide(ground, pose(0.0, -0.5), capsule, at, none, tie);
+    check_collision(c, Vec2(0.0, 1.0), 0.02, Vec2(-0.3, -0.02), exact);
+    // Tilted by 0.1 rad with its lower cap sunk 0.02 m: that cap's lowest point.
+    const double lift = 0.5 * std::sin(0.1);
+    const Pose2 tilted = pose(0.0, 0.25 - 0.02 + lift, 0.1);
+    const std::optional<Collision> t = collide(ground, pose(0.0, -0.5), capsule, tilted, none, tie);
+    check_collision(t, Vec2(0.0, 1.0), 0.02, Vec2(-0.5 * std::cos(0.1), -0.02), exact);
+  }
+
+  TEST_CASE("a triangle corner in a capsule's side: the capsule's side is the reference") {
+    // A capsule along x at the origin, radius 0.3; a triangle pointing down with its tip 0.05 m
+    // into the capsule's top side (y = 0.3): n from the capsule (body 1) up to the triangle.
+    const Shape capsule = Shape::capsule(0.3, 2.0);
+    const Shape tip = Shape::polygon({{0.0, -0.4}, {0.4, 0.2}, {-0.4, 0.2}});
+    const Pose2 tip_pose = pose(0.1, 0.65);  // tip at y = 0.25
+    const std::optional<Collision> c = collide(capsule, pose(0.0, 0.0), tip, tip_pose, none, tie);
+    check_collision(c, Vec2(0.0, 1.0), 0.05, Vec2(0.1, 0.25), exact);
+    CHECK(c->reference == 0);
+  }
+
+  TEST_CASE("a circle against a polygon: face region and corner region by GJK") {
+    const Shape square = Shape::polygon({{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}});
+    const Shape ball = Shape::circle(0.25);
+    // Over the top face, 0.05 m in: n up, the ball's lowest point.
+    const std::optional<Collision> face = collide(square, pose(0.0, 0.0), ball, pose(0.2, 0.7), none, tie);
+    check_collision(face, Vec2(0.0, 1.0), 0.05, Vec2(0.2, 0.45), exact);
+    // Beyond the corner (0.5, 0.5) along the diagonal, 0.05 m in: n along the diagonal.
+    const Vec2 d = Vec2(1.0, 1.0).normalized();
+    const Vec2 centre = Vec2(0.5, 0.5) + 0.2 * d;
+    const std::optional<Collision> corner =
+        collide(square, pose(0.0, 0.0), ball, pose(centre.x(), centre.y()), none, tie);
+    check_collision(corner, d, 0.05, centre - 0.25 * d, exact);
+    // The same with the ball as body 1: n turns round.
+    const std::optional<Collision> swapped =
+        collide(ball, pose(centre.x(), centre.y()), square, pose(0.0, 0.0), none, tie);
+    check_collision(swapped, -d, 0.05, Vec2(0.5, 0.5), 1e-9);
+  }
+
+  TEST_CASE("polygons apart by more than nothing are not in contact; two capsules crossed are") {
+    const Shape tri = Shape::polygon({{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}});
+    CHECK_FALSE(collide(tri, pose(0.0, 0.0), tri, pose(1.0 + 1e-9, 0.0), none, tie));
+    const Shape rod = Shape::capsule(0.1, 2.0);
+    const std::optional<Collision> x = collide(rod, pose(0.0, 0.0), rod, pose(0.0, 0.15, M_PI / 2), none, tie);
+    // Crossed at right angles: the cores cross, and the least move apart lifts rod 2 until its
+    // lower cap's centre (at y = 0.15 − 1 = −0.85) is 0.2 (both radii) above rod 1's core:
+    // 1.05 up (sideways it would have to clear rod 1's whole length, 1.2).
+    REQUIRE(x);
+    CHECK(x->depth == doctest::Approx(1.05).epsilon(1e-9));
+    CHECK((x->normal - Vec2(0.0, 1.0)).norm() <= 1e-9);
+  }
+
 }
 
 TEST_SUITE("BroadPhase") {

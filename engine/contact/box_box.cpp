@@ -72,57 +72,7 @@ struct Candidates {
   int count = 0;                   // how many of items are valid
 
   void add(const Collision& c) { items[count++] = c; }
-  const Collision* begin() const { return items.data(); }
-  const Collision* end() const { return items.data() + count; }
 };
-
-// The deepest candidate; with ties broken, among candidates within the tolerance of the deepest:
-// on a first contact the midpoint of the deepest one's reference group (two vertices of one
-// edge: a flat landing pushes straight up), unless ties.midpoint_first is off; otherwise the
-// candidate farthest from the cached points, so that the cache gains the point it lacks (with
-// none cached, the first tied one). Ties beyond that go to the first candidate, keeping the
-// result deterministic.
-Collision choose(const Candidates& candidates, const CachedPoints& cached, const TieRule& ties) {
-  double deepest = -std::numeric_limits<double>::infinity();
-  int first = 0;
-  for (int k = 0; k < candidates.count; ++k) {
-    if (candidates.items[k].depth > deepest) {
-      deepest = candidates.items[k].depth;
-      first = k;
-    }
-  }
-  if (!ties.break_ties) return candidates.items[first];
-  const auto tied = [&](const Collision& c) { return c.depth >= deepest - ties.tolerance; };
-  if (cached.count == 0 && ties.midpoint_first) {
-    Collision mid = candidates.items[first];
-    mid.point.setZero();
-    mid.depth = 0.0;
-    int n = 0;
-    for (const Collision& c : candidates) {
-      if (!tied(c) || c.reference != candidates.items[first].reference) continue;
-      mid.point += c.point;
-      mid.depth += c.depth;
-      ++n;
-    }
-    mid.point /= n;
-    mid.depth /= n;
-    return mid;
-  }
-  int chosen = first;
-  double farthest = -1.0;
-  for (int k = 0; k < candidates.count; ++k) {
-    if (!tied(candidates.items[k])) continue;
-    double nearest = std::numeric_limits<double>::infinity();
-    for (int j = 0; j < cached.count; ++j) {
-      nearest = std::min(nearest, (candidates.items[k].point - cached.points[j]).norm());
-    }
-    if (nearest > farthest) {
-      farthest = nearest;
-      chosen = k;
-    }
-  }
-  return candidates.items[chosen];
-}
 
 }  // namespace
 
@@ -171,7 +121,7 @@ std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, co
     }
     return candidate(ref, deepest);
   }
-  return choose(candidates, cached, ties);
+  return choose_deepest(candidates.items.data(), candidates.count, cached, ties);
 }
 
 }  // namespace lamina

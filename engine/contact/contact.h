@@ -55,7 +55,7 @@ struct ContactPair {
   BodyPair bodies;                    // (body 1, body 2), body 1 < body 2
   double friction = 0.0;              // μ of the pair, √(μ1 μ2)
   double restitution = 0.0;           // e of the pair, max(e1, e2)
-  int capacity = 2;                   // most contacts kept: 2 for box–box, 1 with a circle
+  int capacity = 2;                   // most contacts kept: 2, or 1 when a circle is in the pair
   int count = 0;                      // contacts in use
   std::array<Contact, 2> contacts{};  // the first `count` are in use
   RowRange rows;                      // its rows in this step's MLCP: contact rows, then friction rows

@@ -17,7 +17,8 @@ ContactPair new_pair(const BodyPair& bodies, const std::vector<Shape>& shapes,
   pair.bodies = bodies;
   pair.friction = combined_friction(materials[bodies.first], materials[bodies.second]);
   pair.restitution = combined_restitution(materials[bodies.first], materials[bodies.second]);
-  pair.capacity = shapes[bodies.first].is_box() && shapes[bodies.second].is_box() ? 2 : 1;
+  // Two points hold a face or a capsule's side flat; a circle touches at one.
+  pair.capacity = shapes[bodies.first].is_circle() || shapes[bodies.second].is_circle() ? 1 : 2;
   return pair;
 }
 

@@ -1,8 +1,59 @@
 #include "contact/narrow_phase.h"
 
 #include <cmath>
+#include <limits>
 
 namespace lamina {
+
+// The deepest candidate; with ties broken, among candidates within the tolerance of the deepest:
+// on a first contact the midpoint of the deepest one's reference group (two vertices of one
+// edge: a flat landing pushes straight up), unless ties.midpoint_first is off; otherwise the
+// candidate farthest from the cached points, so that the cache gains the point it lacks (with
+// none cached, the first tied one). Ties beyond that go to the first candidate, keeping the
+// result deterministic.
+Collision choose_deepest(const Collision* candidates, int count, const CachedPoints& cached,
+                         const TieRule& ties) {
+  double deepest = -std::numeric_limits<double>::infinity();
+  int first = 0;
+  for (int k = 0; k < count; ++k) {
+    if (candidates[k].depth > deepest) {
+      deepest = candidates[k].depth;
+      first = k;
+    }
+  }
+  if (!ties.break_ties) return candidates[first];
+  const auto tied = [&](const Collision& c) { return c.depth >= deepest - ties.tolerance; };
+  if (cached.count == 0 && ties.midpoint_first) {
+    Collision mid = candidates[first];
+    mid.point.setZero();
+    mid.depth = 0.0;
+    int n = 0;
+    for (int k = 0; k < count; ++k) {
+      const Collision& c = candidates[k];
+      if (!tied(c) || c.reference != candidates[first].reference) continue;
+      mid.point += c.point;
+      mid.depth += c.depth;
+      ++n;
+    }
+    mid.point /= n;
+    mid.depth /= n;
+    return mid;
+  }
+  int chosen = first;
+  double farthest = -1.0;
+  for (int k = 0; k < count; ++k) {
+    if (!tied(candidates[k])) continue;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < cached.count; ++j) {
+      nearest = std::min(nearest, (candidates[k].point - cached.points[j]).norm());
+    }
+    if (nearest > farthest) {
+      farthest = nearest;
+      chosen = k;
+    }
+  }
+  return candidates[chosen];
+}
 
 std::optional<Collision> collide_box_circle(const Shape& box, const Pose2& box_pose,
                                             const Shape& circle, const Pose2& circle_pose) {
@@ -53,6 +104,11 @@ std::optional<Collision> collide(const Shape& shape1, const Pose2& pose1, const 
                                  const TieRule& ties) {
   if (shape1.is_box() && shape2.is_box()) {
     return collide_boxes(shape1, pose1, shape2, pose2, cached, ties);
+  }
+  const bool box_and_circle = (shape1.is_box() && shape2.is_circle()) ||
+                              (shape1.is_circle() && shape2.is_box());
+  if (!box_and_circle && !(shape1.is_circle() && shape2.is_circle())) {
+    return collide_convex(shape1, pose1, shape2, pose2, cached, ties);
   }
   if (shape1.is_box()) return collide_box_circle(shape1, pose1, shape2, pose2);
   if (shape2.is_box()) {

@@ -12,6 +12,9 @@
 //   s_f = min over its vertices v of  n_f · (v − x_r) − h_f
 // The boxes overlap (or touch) when the largest s_f over all eight faces is ≤ 0; that face is
 // the reference face and the depth of a vertex inside the reference box is −(n_f · (v − x_r) − h_f).
+// Box–circle and circle–circle are closed forms. Every other pair (a polygon or a capsule in it)
+// goes through GJK and EPA (gjk.h, convex_contact.cpp); box–box keeps its separating axes as the
+// fast path, checked against GJK/EPA in tests/test_gjk_contact.cpp.
 #pragma once
 
 #include <array>
@@ -54,7 +57,12 @@ std::optional<Collision> collide(const Shape& shape1, const Pose2& pose1, const 
                                  const Pose2& pose2, const CachedPoints& cached,
                                  const TieRule& ties);
 
-// The three pair types; `collide` dispatches to them (box–circle also serves circle–box).
+// The deepest of `count` candidate points, equally deep ones told apart by `ties` (the rule
+// above; box_box.cpp and convex_contact.cpp gather the candidates).
+Collision choose_deepest(const Collision* candidates, int count, const CachedPoints& cached,
+                         const TieRule& ties);
+
+// The pair types; `collide` dispatches to them (box–circle also serves circle–box).
 std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, const Shape& box2,
                                        const Pose2& pose2, const CachedPoints& cached,
                                        const TieRule& ties);
@@ -62,5 +70,9 @@ std::optional<Collision> collide_box_circle(const Shape& box, const Pose2& box_p
                                             const Shape& circle, const Pose2& circle_pose);
 std::optional<Collision> collide_circles(const Shape& circle1, const Pose2& pose1,
                                          const Shape& circle2, const Pose2& pose2);
+// Any two shapes, by GJK and EPA on their cores (convex_contact.cpp).
+std::optional<Collision> collide_convex(const Shape& shape1, const Pose2& pose1,
+                                        const Shape& shape2, const Pose2& pose2,
+                                        const CachedPoints& cached, const TieRule& ties);
 
 }  // namespace lamina

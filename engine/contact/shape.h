@@ -1,29 +1,55 @@
 // The shapes of chapter 4's collision detection, the material of a body, and their bounding boxes.
 //
-//   box     half extents (hx, hy): the points |r_x| ≤ hx, |r_y| ≤ hy of the body frame
-//   circle  radius ρ: the points |r| ≤ ρ of the body frame
+//   box      half extents (hx, hy): the points |r_x| ≤ hx, |r_y| ≤ hy of the body frame
+//   circle   radius ρ: the points |r| ≤ ρ of the body frame
+//   polygon  3 to 8 vertices v_i, counter-clockwise, convex: the points on the inner side of
+//            every edge (v_i, v_i+1); the vertices are about the centroid (mass_properties.h)
+//   capsule  radius ρ and length l: the points within ρ of the segment from (−l/2, 0) to
+//            (l/2, 0) of the body frame
 //   μ       friction coefficient of a pair: √(μ1 μ2)        (Box2D's rule, beyond the text)
 //   e       restitution of a pair: max(e1, e2)               (Box2D's rule, beyond the text)
 // Shapes are centred on the body's centre of mass; a static body may be any shape (the ground
-// is a static box).
+// is a static box). For GJK and EPA (gjk.h) every shape is a core inflated by a radius: a box or
+// polygon its vertices with radius 0, a circle its centre with ρ, a capsule its segment with ρ.
 #pragma once
 
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contact/gjk.h"
 #include "contact/planar.h"
 
 namespace lamina {
 
 struct Shape {
-  enum class Kind { box, circle };
-  Kind kind = Kind::box;                    // which of the two shapes
+  enum class Kind { box, circle, polygon, capsule };
+  Kind kind = Kind::box;                    // which of the four shapes
   Vec2 half_extents = Vec2(0.5, 0.5);      // (hx, hy) of a box, in m
-  double radius = 0.0;                      // ρ of a circle, in m
+  double radius = 0.0;                      // ρ of a circle or a capsule, in m
+  double length = 0.0;                      // l of a capsule, between its caps' centres, in m
+  std::array<Vec2, Convex::max_vertices> vertices{};  // a polygon's v_i, body frame, in m
+  int vertex_count = 0;                     // how many of `vertices` a polygon has
 
   // Sizes are checked where a shape enters a World (validate below).
   static Shape box(double half_x, double half_y);
   static Shape circle(double radius);
+  // `vertices` about the centre of mass, counter-clockwise; throws std::invalid_argument with
+  // polygon_problem's line when they are not a convex polygon.
+  static Shape polygon(const std::vector<Vec2>& vertices);
+  static Shape capsule(double radius, double length);
 
   bool is_box() const { return kind == Kind::box; }
+  bool is_circle() const { return kind == Kind::circle; }
 };
+
+// The shape's core at a pose, world frame, with its radius (gjk.h).
+Convex core_of(const Shape& shape, const Pose2& pose);
+
+// What is wrong with a polygon's vertices, or nothing: fewer than 3 or more than 8, a vertex
+// repeating its neighbour, three neighbours on one line (the turn at a vertex below 1e-6 of its
+// edges' lengths, relative), clockwise order, or a turn the other way (not convex).
+std::optional<std::string> polygon_problem(const std::vector<Vec2>& vertices);
 
 // How two bodies rub and bounce. One default friction for scene files and code alike: 0.6, what
 // every Lamina scene uses (wood on wood, rubber on concrete are 0.4 to 0.8). Box2D's fixtures
@@ -53,10 +79,15 @@ struct Aabb {
 // The bounding box of a shape at a pose.
 Aabb bounding_box(const Shape& shape, const Pose2& pose);
 
+// The farthest any point of the shape lies from its centre of mass, in m: how far it can reach
+// at any angle.
+double outer_radius(const Shape& shape);
+
 // Whether a world point lies inside the shape at a pose, or outside by at most `tolerance` (m).
 bool contains(const Shape& shape, const Pose2& pose, const Vec2& point, double tolerance);
 
-// Throws std::invalid_argument unless the shape's sizes are finite and positive.
+// Throws std::invalid_argument unless the shape's sizes are finite and positive (a capsule's
+// length may be 0) and a polygon's vertices pass polygon_problem.
 void validate(const Shape& shape);
 // Throws std::invalid_argument unless μ ≥ 0 and 0 ≤ e ≤ 1, both finite.
 void validate(const Material& material);

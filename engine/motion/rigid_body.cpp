@@ -114,4 +114,11 @@ RigidBody disc_body(double density, double radius, const Vec3& x, double angle) 
   return RigidBody::dynamic_body(mass, disc_inertia(mass, radius), x, planar_orientation(angle));
 }
 
+RigidBody prism_body(double density, const AreaMoments& moments, const Vec3& x, double angle) {
+  require_positive(moments.area, "rigid body: area");
+  require_positive(density, "rigid body: density");
+  const double mass = density * moments.area * planar_depth;
+  return RigidBody::dynamic_body(mass, prism_inertia(mass, moments), x, planar_orientation(angle));
+}
+
 }  // namespace lamina

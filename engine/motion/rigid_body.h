@@ -1,6 +1,7 @@
 // A rigid body with the 3D state of chapter 2: x, q, v, ω, and what is derived from them.
 #pragma once
 
+#include "kinematics/mass_properties.h"
 #include "kinematics/math_types.h"
 
 namespace lamina {
@@ -55,5 +56,8 @@ double planar_angle(const Quat& q);
 RigidBody box_body(double density, double half_x, double half_y, const Vec3& x, double angle = 0.0);
 // A dynamic disc of the given density, radius and depth 1 m.
 RigidBody disc_body(double density, double radius, const Vec3& x, double angle = 0.0);
+// A dynamic prism (a polygon or a capsule 1 m deep) of the given density and area moments about
+// its centroid (mass_properties.h); x is its centre of mass.
+RigidBody prism_body(double density, const AreaMoments& moments, const Vec3& x, double angle = 0.0);
 
 }  // namespace lamina

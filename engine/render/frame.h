@@ -18,14 +18,17 @@
 namespace lamina::render {
 
 
-// A rigid body's outline: a box or a circle, with a mark that shows its rotation.
+// A rigid body's outline: a box, a circle, a convex polygon or a capsule, with a mark that shows
+// its rotation.
 struct Body {
-  enum class Shape { box, circle };
+  enum class Shape { box, circle, polygon, capsule };
   Shape shape = Shape::box;
   Vec2 centre = Vec2::Zero();   // centre of mass x, in m
   double angle = 0.0;           // θ about z, in rad
   Vec2 half_extents{0.5, 0.5};  // box: half width and half height, in m
-  double radius = 0.5;          // circle: radius, in m
+  double radius = 0.5;          // circle, capsule: radius, in m
+  double length = 1.0;          // capsule: between its caps' centres, along its x axis, in m
+  std::vector<Vec2> vertices;   // polygon: counter-clockwise, body frame about `centre`, in m
   Colour fill = tint(palette::sky_blue, 0.35);
   Vec2 velocity = Vec2::Zero();  // v, in m/s (the velocities overlay)
   bool fixed = false;            // a static body: no centre-of-mass mark, no velocity

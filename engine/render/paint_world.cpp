@@ -1,5 +1,7 @@
 // Ground, paths, bodies, joints, arrows and labels: the scene itself, then its 3D items.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "render/paint.h"
 #include "render/tessellate.h"
@@ -19,14 +21,73 @@ std::vector<Vec2> box_corners(const Canvas& c, const Body& body) {
           c.px(body.centre + ex - ey)};
 }
 
+// A body-frame point r at the body's pose, in pixels.
+Vec2 body_px(const Canvas& c, const Body& body, const Vec2& r) {
+  return c.px(body.centre + direction(body.angle) * r.x() + direction(body.angle + M_PI / 2) * r.y());
+}
+
+// A capsule's outline: the half circle round each cap, joined by the two straight sides.
+std::vector<Vec2> capsule_points(const Canvas& c, const Body& body) {
+  const int per_cap = 24;
+  std::vector<Vec2> points;
+  for (int cap = 0; cap < 2; ++cap) {
+    const double side = cap == 0 ? 1.0 : -1.0;  // the +x cap first, then the −x one
+    for (int k = 0; k <= per_cap; ++k) {
+      const double a = -M_PI / 2 + M_PI * k / per_cap + (cap == 0 ? 0.0 : M_PI);
+      points.push_back(body_px(c, body, Vec2(side * 0.5 * body.length, 0.0) +
+                                            body.radius * direction(a)));
+    }
+  }
+  return points;
+}
+
+// The outline of a body, in pixels, counter-clockwise in the world.
+std::vector<Vec2> outline_of(const Canvas& c, const Body& body) {
+  switch (body.shape) {
+    case Body::Shape::box:
+      return box_corners(c, body);
+    case Body::Shape::circle:
+      return circle_points(c.px(body.centre), body.radius * c.camera.pixels_per_metre());
+    case Body::Shape::polygon: {
+      std::vector<Vec2> points;
+      for (const Vec2& v : body.vertices) points.push_back(body_px(c, body, v));
+      return points;
+    }
+    case Body::Shape::capsule:
+      return capsule_points(c, body);
+  }
+  return {};
+}
+
+// How far the body's outline lies from its centre along its own x axis, in m: where the
+// rotation mark ends. A polygon's edge (a, b) with outward normal m is met at (m · a)/(m · x̂).
+double reach_along_x(const Body& body) {
+  switch (body.shape) {
+    case Body::Shape::box:
+      return body.half_extents.x();
+    case Body::Shape::circle:
+      return body.radius;
+    case Body::Shape::capsule:
+      return 0.5 * body.length + body.radius;
+    case Body::Shape::polygon:
+      break;
+  }
+  double reach = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < body.vertices.size(); ++i) {
+    const Vec2& a = body.vertices[i];
+    const Vec2 edge = body.vertices[(i + 1) % body.vertices.size()] - a;
+    const Vec2 outward(edge.y(), -edge.x());
+    if (outward.x() > 0.0) reach = std::min(reach, outward.dot(a) / outward.x());
+  }
+  return reach;
+}
+
 // The outline, filled, with a radius line from the centre that turns with the body (a fixed
 // body never turns, so it has none).
 void paint_body(Canvas& c, const Body& body) {
   const Vec2 centre = c.px(body.centre);
-  const bool box = body.shape == Body::Shape::box;
-  const double reach = box ? body.half_extents.x() : body.radius;
-  const std::vector<Vec2> outline =
-      box ? box_corners(c, body) : circle_points(centre, body.radius * c.camera.pixels_per_metre());
+  const double reach = reach_along_x(body);
+  const std::vector<Vec2> outline = outline_of(c, body);
   c.draw.fill_convex(outline, body.fill);
   c.draw.stroke_convex(outline, c.style.outline, palette::ink);
   Rect bounds{outline[0], outline[0]};

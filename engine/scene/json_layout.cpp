@@ -8,7 +8,19 @@ using Json = nlohmann::ordered_json;
 Json vec2_json(const Vec2& v) { return Json::array({v[0], v[1]}); }
 
 Json shape_json(const ShapeDescription& shape) {
-  if (shape.type == ShapeType::circle) return {{"type", "circle"}, {"radius", shape.radius}};
+  switch (shape.type) {
+    case ShapeType::circle:
+      return {{"type", "circle"}, {"radius", shape.radius}};
+    case ShapeType::polygon: {
+      Json vertices = Json::array();
+      for (const Vec2& v : shape.vertices) vertices.push_back(vec2_json(v));
+      return {{"type", "polygon"}, {"vertices", vertices}};
+    }
+    case ShapeType::capsule:
+      return {{"type", "capsule"}, {"radius", shape.radius}, {"length", shape.length}};
+    case ShapeType::box:
+      break;
+  }
   return {{"type", "box"}, {"half_extents", vec2_json(shape.half_extents)}};
 }
 

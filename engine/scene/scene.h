@@ -16,24 +16,29 @@
 
 namespace lamina {
 
-enum class ShapeType { box, circle };
+enum class ShapeType { box, circle, polygon, capsule };
 
 struct ShapeDescription {
   ShapeType type = ShapeType::box;
   Vec2 half_extents{0.5, 0.5};  // a box's half width and half height, in m
-  double radius = 0.5;           // a circle's radius, in m
+  double radius = 0.5;           // a circle's or a capsule's radius, in m
+  double length = 1.0;           // a capsule's length between its caps' centres, along x, in m
+  std::vector<Vec2> vertices;    // a polygon's vertices, counter-clockwise, in the body's frame:
+                                 // about its position, not its centroid (BodyDescription)
 };
 
 struct BodyDescription {
   std::string name;                  // unique within the scene; joints refer to it
   ShapeDescription shape;
-  Vec2 position{0.0, 0.0};          // centre of mass, in m
+  Vec2 position{0.0, 0.0};          // the origin of the body's frame, in m: the centre of mass,
+                                     // except for a polygon, whose centre of mass is its
+                                     // vertices' centroid (position + R(angle) c)
   double angle = 0.0;                // about z, in rad
   bool is_static = false;            // a static body never moves (zero inverse mass, eq. 5-1)
   double density = 1.0;              // kg/m² over the shape's area (1 m deep), dynamic bodies only
   double friction = Material().friction;        // μ; two bodies combine as √(μ1 μ2)
   double restitution = Material().restitution;  // e in [0, 1]; two bodies combine as the max
-  Vec2 velocity{0.0, 0.0};          // v, in m/s
+  Vec2 velocity{0.0, 0.0};          // v of the centre of mass, in m/s
   double angular_velocity = 0.0;     // ω about z, in rad/s
 };
 

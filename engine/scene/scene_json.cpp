@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "kinematics/mass_properties.h"
 #include "scene/json_layout.h"
 #include "scene/scene_limits.h"
 #include "scene/shortest_number.h"
@@ -106,9 +107,6 @@ class Reader {
     return obj.at(key);
   }
 
-  void forbid(const json& obj, const std::string& path, const char* key, const std::string& why) const {
-    if (obj.contains(key)) fail(join(path, key), why);
-  }
 
   // "bodies[2]" and "angle" make "bodies[2].angle"; "bodies" and 2 make "bodies[2]". `path` is
   // taken by value so that a long path can be moved in and grown in place.
@@ -122,14 +120,16 @@ class Reader {
     return path;
   }
 
- private:
-  static std::string type_of(const json& j) {
-    return j.is_number() ? "number " + j.dump() : std::string(j.type_name());
-  }
+  // "a, b, c": keys for messages.
   static std::string list(const std::set<std::string>& keys) {
     std::string out;
     for (const std::string& key : keys) out += (out.empty() ? "" : ", ") + key;
     return out;
+  }
+
+ private:
+  static std::string type_of(const json& j) {
+    return j.is_number() ? "number " + j.dump() : std::string(j.type_name());
   }
 
   std::string origin_;
@@ -203,25 +203,69 @@ void optional(const Reader& r, const json& obj, const std::string& path, const c
   if (obj.contains(key)) target = (r.*read)(obj.at(key), Reader::join(path, key), extra...);
 }
 
+// Each shape type with the keys it takes, in the order messages list the types.
+const std::vector<std::pair<std::string, std::set<std::string>>> shape_keys = {
+    {"box", {"type", "half_extents"}},
+    {"circle", {"type", "radius"}},
+    {"polygon", {"type", "vertices"}},
+    {"capsule", {"type", "radius", "length"}},
+};
+
+// A polygon's vertices: 3 to 8 points in the body's frame, a convex polygon counter-clockwise
+// (polygon_problem) no smaller than the smallest box.
+std::vector<Vec2> read_vertices(const Reader& r, const json& j, const std::string& path) {
+  r.array(j, path, 0);
+  std::vector<Vec2> vertices;
+  for (size_t k = 0; k < j.size() && k <= Convex::max_vertices; ++k) {
+    vertices.push_back(r.vec2(j[k], Reader::at(path, k), scene_limits::coordinate));
+  }
+  if (j.size() > Convex::max_vertices) vertices.resize(j.size());  // polygon_problem names the count
+  if (const std::optional<std::string> problem = polygon_problem(vertices)) r.fail(path, *problem);
+  const double area = polygon_moments(vertices).area;
+  if (area < scene_limits::polygon_area) {
+    r.fail(path, "the polygon's area " + shortest_number(area) + " m² is below " +
+                     shortest_number(scene_limits::polygon_area) + " m², the smallest box's");
+  }
+  return vertices;
+}
+
 ShapeDescription read_shape(const Reader& r, const json& j, const std::string& path) {
-  r.expect_object(j, path, {"type", "half_extents", "radius"});
+  r.object(j, path);
   const std::string type_path = Reader::join(path, "type");
-  const std::string type = r.text(r.required(j, path, "type", " (\"box\" or \"circle\")"), type_path);
+  const std::string names = "\"box\", \"circle\", \"polygon\" or \"capsule\"";
+  const std::string type = r.text(r.required(j, path, "type", " (" + names + ")"), type_path);
+  const auto keys = std::find_if(shape_keys.begin(), shape_keys.end(),
+                                 [&](const auto& entry) { return entry.first == type; });
+  if (keys == shape_keys.end()) r.fail(type_path, "must be " + names + ", got \"" + type + "\"");
+  for (const auto& item : j.items()) {
+    if (keys->second.count(item.key()) != 0) continue;
+    const bool another_shapes = std::any_of(shape_keys.begin(), shape_keys.end(), [&](const auto& e) {
+      return e.second.count(item.key()) != 0;
+    });
+    r.fail(Reader::join(path, item.key()),
+           (another_shapes ? "a " + type + " has no " + item.key() : std::string("unknown key")) +
+               " (a " + type + "'s keys: " + Reader::list(keys->second) + ")");
+  }
   ShapeDescription shape;
+  const auto size = [&](const char* key, Range<double> range) {
+    return r.in_range(r.required(j, path, key), Reader::join(path, key), range);
+  };
   if (type == "box") {
-    r.forbid(j, path, "radius", "a box has no radius (use half_extents)");
     shape.type = ShapeType::box;
     const std::string hp = Reader::join(path, "half_extents");
     const json& he = r.array(r.required(j, path, "half_extents"), hp, 2);
     shape.half_extents = {r.in_range(he[0], Reader::at(hp, 0), scene_limits::size),
                           r.in_range(he[1], Reader::at(hp, 1), scene_limits::size)};
   } else if (type == "circle") {
-    r.forbid(j, path, "half_extents", "a circle has no half extents (use radius)");
     shape.type = ShapeType::circle;
-    shape.radius = r.in_range(r.required(j, path, "radius"), Reader::join(path, "radius"),
-                                 scene_limits::size);
+    shape.radius = size("radius", scene_limits::size);
+  } else if (type == "polygon") {
+    shape.type = ShapeType::polygon;
+    shape.vertices = read_vertices(r, r.required(j, path, "vertices"), Reader::join(path, "vertices"));
   } else {
-    r.fail(type_path, "must be \"box\" or \"circle\", got \"" + type + "\"");
+    shape.type = ShapeType::capsule;
+    shape.radius = size("radius", scene_limits::size);
+    shape.length = size("length", scene_limits::capsule_length);
   }
   return shape;
 }

@@ -67,6 +67,13 @@ inline constexpr Range<double> normal_component{-1.0, 1.0};
 // of the size. 1e6: as coordinates.
 inline constexpr Range<double> size{0.02, 1e6};
 
+// A capsule's length between its caps' centres, in m: 0 is a circle; 1e6 as sizes.
+inline constexpr Range<double> capsule_length{0.0, 1e6};
+
+// The smallest area of a polygon, in m²: the smallest box's, (2 × 0.02 m)², for the reason of
+// `size` (a face of the smallest box still holds two contact points apart).
+inline constexpr double polygon_area = 4.0 * size.low * size.low;
+
 // Density, in kg/m². Bodies are 1 m deep, so this is the material's kg/m³: from a thousandth
 // of air (1.2) to four times osmium (2.26e4). Only mass ratios change the motion, but densities
 // of 1e-300 and 1e300 make a box on the ground non-finite in its first step (1/m and m g

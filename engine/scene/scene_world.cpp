@@ -12,27 +12,38 @@
 #include "constraints/incline_constraint.h"
 #include "constraints/revolute_joint.h"
 #include "beyond/methods.h"
+#include "kinematics/mass_properties.h"
 
 namespace lamina {
 namespace {
 
 Vec3 planar(const Vec2& v) { return Vec3(v.x(), v.y(), 0.0); }
 
+// A polygon's or a capsule's area moments about its centre of mass.
+AreaMoments moments_of(const Shape& shape) {
+  if (shape.kind == Shape::Kind::capsule) return capsule_moments(shape.radius, shape.length);
+  return polygon_moments(
+      std::vector<Vec2>(shape.vertices.begin(), shape.vertices.begin() + shape.vertex_count));
+}
+
 int add_body(World& world, const BodyDescription& desc) {
   const Material material{desc.friction, desc.restitution};
-  const Vec3 x = planar(desc.position);
   const ShapeDescription& s = desc.shape;
-  const Shape shape = s.type == ShapeType::box ? Shape::box(s.half_extents[0], s.half_extents[1])
-                                               : Shape::circle(s.radius);
+  const PlacedShape placed = place_shape(desc);
+  const Vec3 x = planar(placed.centre);
   if (desc.is_static) {
-    return world.add_body(RigidBody::static_body(x, planar_orientation(desc.angle)), shape, material);
+    return world.add_body(RigidBody::static_body(x, planar_orientation(desc.angle)), placed.shape,
+                          material);
   }
-  RigidBody body = s.type == ShapeType::box
-                       ? box_body(desc.density, s.half_extents[0], s.half_extents[1], x, desc.angle)
-                       : disc_body(desc.density, s.radius, x, desc.angle);
+  RigidBody body =
+      s.type == ShapeType::box
+          ? box_body(desc.density, s.half_extents[0], s.half_extents[1], x, desc.angle)
+      : s.type == ShapeType::circle
+          ? disc_body(desc.density, s.radius, x, desc.angle)
+          : prism_body(desc.density, moments_of(placed.shape), x, desc.angle);
   body.v = planar(desc.velocity);
   body.angular_velocity = Vec3(0.0, 0.0, desc.angular_velocity);
-  return world.add_body(body, shape, material);
+  return world.add_body(body, placed.shape, material);
 }
 
 // The engine constraints of a scene's joint: one, or for an angle limit with both sides two, as
@@ -83,6 +94,23 @@ auto at_path(const std::string& path, Add&& add) {
 }
 
 }  // namespace
+
+PlacedShape place_shape(const BodyDescription& body) {
+  const ShapeDescription& s = body.shape;
+  PlacedShape placed{Shape::box(s.half_extents[0], s.half_extents[1]), body.position};
+  if (s.type == ShapeType::circle) {
+    placed.shape = Shape::circle(s.radius);
+  } else if (s.type == ShapeType::capsule) {
+    placed.shape = Shape::capsule(s.radius, s.length);
+  } else if (s.type == ShapeType::polygon) {
+    const Vec2 c = polygon_moments(s.vertices).centroid;
+    std::vector<Vec2> about_centroid;
+    for (const Vec2& v : s.vertices) about_centroid.push_back(v - c);
+    placed.shape = Shape::polygon(about_centroid);
+    placed.centre += planar_orientation(body.angle).toRotationMatrix().topLeftCorner<2, 2>() * c;
+  }
+  return placed;
+}
 
 WorldSettings world_settings(const Scene& scene) {
   WorldSettings settings;

@@ -7,6 +7,7 @@
 #include "app/harness/format.h"
 #include "app/harness/plot.h"
 #include "app/views/contact/stepped_world.h"
+#include "app/views/contact/world_view.h"
 #include "app/views/contact/world_explanation.h"
 #include "beyond/methods.h"
 #include "scene/builtin_scenes.h"
@@ -21,11 +22,9 @@ constexpr int every = 20;  // steps between frames: 31 frames show t = 0 … 10 
 
 render::Body body_at(const BodyDescription& d, const Pose& pose, render::Colour fill) {
   render::Body b;
-  b.shape = d.shape.type == ShapeType::circle ? render::Body::Shape::circle : render::Body::Shape::box;
+  view::set_outline(b, place_shape(d).shape);
   b.centre = pose.head<2>();
   b.angle = pose.z();
-  b.half_extents = d.shape.half_extents;
-  b.radius = d.shape.radius;
   b.fill = fill;
   b.fixed = d.is_static;
   return b;
@@ -120,12 +119,14 @@ class Overlay : public tutorial::Scene {
   render::Rect view() const {
     const render::Rect least = c_.view;
     render::Rect r = least;
+    std::vector<Shape> shapes;
+    for (const BodyDescription& d : c_.scene.bodies) shapes.push_back(place_shape(d).shape);
     for (const LabRun& run : c_.runs()) {
       for (const std::vector<Pose>& poses : run.poses) {
         for (std::size_t b = 0; b < poses.size(); ++b) {
           const BodyDescription& d = c_.scene.bodies[b];
           if (d.is_static) continue;
-          const double reach = 0.3 + (d.shape.type == ShapeType::circle ? d.shape.radius : d.shape.half_extents.norm());
+          const double reach = 0.3 + outer_radius(shapes[b]);
           r.min.x() = std::min(r.min.x(), poses[b].x() - reach);
           r.max = r.max.cwiseMax(poses[b].head<2>() + Vec2(reach, reach));
         }

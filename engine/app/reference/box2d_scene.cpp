@@ -1,7 +1,9 @@
 #include "app/reference/box2d_scene.h"
 
 #include <map>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace lamina {
 namespace {
@@ -17,16 +19,29 @@ b2Body* add_body(b2World& world, const BodyDescription& desc) {
   def.angularVelocity = static_cast<float>(desc.angular_velocity);
   b2Body* body = world.CreateBody(&def);
 
-  b2PolygonShape box;
+  b2PolygonShape polygon;
   b2CircleShape circle;
   b2FixtureDef fixture;
-  if (desc.shape.type == ShapeType::box) {
-    box.SetAsBox(static_cast<float>(desc.shape.half_extents[0]),
-                 static_cast<float>(desc.shape.half_extents[1]));
-    fixture.shape = &box;
-  } else {
-    circle.m_radius = static_cast<float>(desc.shape.radius);
-    fixture.shape = &circle;
+  fixture.shape = &polygon;
+  switch (desc.shape.type) {
+    case ShapeType::box:
+      polygon.SetAsBox(static_cast<float>(desc.shape.half_extents[0]),
+                       static_cast<float>(desc.shape.half_extents[1]));
+      break;
+    case ShapeType::circle:
+      circle.m_radius = static_cast<float>(desc.shape.radius);
+      fixture.shape = &circle;
+      break;
+    case ShapeType::polygon: {
+      // Box2D's body origin is the vertices' origin, as a Lamina scene's position is; Box2D
+      // finds the centroid itself.
+      std::vector<b2Vec2> points;
+      for (const Vec2& v : desc.shape.vertices) points.push_back(to_b2(v));
+      polygon.Set(points.data(), static_cast<int32>(points.size()));
+      break;
+    }
+    case ShapeType::capsule:
+      throw std::invalid_argument("body \"" + desc.name + "\": Box2D 2.4.1 has no capsule shape");
   }
   fixture.density = desc.is_static ? 0.0f : static_cast<float>(desc.density);
   fixture.friction = static_cast<float>(desc.friction);

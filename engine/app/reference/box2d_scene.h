@@ -31,7 +31,7 @@ struct Box2dScene {
 };
 
 // Box2D's world for the scene: the same bodies, shapes, densities, friction, restitution and
-// joints, in the same order.
+// joints, in the same order. Throws std::invalid_argument for a capsule (Box2D 2.4.1 has none).
 Box2dScene make_box2d_scene(const Scene& scene, const Box2dSettings& settings = {});
 
 }  // namespace lamina

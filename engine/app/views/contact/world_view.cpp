@@ -11,11 +11,29 @@ constexpr render::Colour fixed_fill = render::tint(render::palette::grey, 0.3);
 
 render::Body body_view(const RigidBody& body, const Shape& shape, render::Colour fill) {
   render::Body view = box_view(body, shape.half_extents, fill);
-  if (!shape.is_box()) {
-    view.shape = render::Body::Shape::circle;
-    view.radius = shape.radius;
-  }
+  set_outline(view, shape);
   return view;
+}
+
+void set_outline(render::Body& view, const Shape& shape) {
+  view.shape = render::Body::Shape::box;
+  view.half_extents = shape.half_extents;
+  view.radius = shape.radius;
+  switch (shape.kind) {
+    case Shape::Kind::box:
+      break;
+    case Shape::Kind::circle:
+      view.shape = render::Body::Shape::circle;
+      break;
+    case Shape::Kind::polygon:
+      view.shape = render::Body::Shape::polygon;
+      view.vertices.assign(shape.vertices.begin(), shape.vertices.begin() + shape.vertex_count);
+      break;
+    case Shape::Kind::capsule:
+      view.shape = render::Body::Shape::capsule;
+      view.length = shape.length;
+      break;
+  }
 }
 
 render::Contact contact_view(const ContactInfo& c) {

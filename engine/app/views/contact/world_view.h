@@ -13,8 +13,10 @@
 
 namespace lamina::view {
 
-// A body drawn with its shape (a box or a disc) at its state.
+// A body drawn with its shape at its state.
 render::Body body_view(const RigidBody& body, const Shape& shape, render::Colour fill);
+// Gives a drawn body the outline of `shape` (its kind, sizes and a polygon's vertices).
+void set_outline(render::Body& view, const Shape& shape);
 
 // A contact as drawn: point, normal, λ of its contact row along n and of its friction row along
 // u1 = z × n (chapter 4: the force on body 2 is λ_n n + λ_t u1), fresh or cached.
