@@ -104,4 +104,9 @@ TEST_SUITE("StepAllocations") {
   TEST_CASE("a bridge of pinned planks under a box steps without allocating (joints' rows too)") {
     CHECK(allocations_in_steady_steps("bridge") == 0);
   }
+
+  TEST_CASE("a honeycomb pyramid of hexagons and a capsule pile step without allocating (GJK, EPA)") {
+    CHECK(allocations_in_steady_steps("hexagon-pyramid") == 0);
+    CHECK(allocations_in_steady_steps("capsule-pile") == 0);
+  }
 }

@@ -27,7 +27,7 @@ namespace {
 
 using nlohmann::json;
 
-// A scene's values lie at most this deep: bodies[i].shape.half_extents[k] is at depth 5.
+// A scene's values lie at most this deep: bodies[i].shape.vertices[k][c] is at depth 6.
 constexpr int max_depth = 6;
 
 // Every number and every array in the document down to max_depth, depth first.
@@ -50,6 +50,7 @@ double range_end(std::mt19937& rng) {
       limits::coordinate.low,    limits::coordinate.high,
       limits::angle.low,         limits::angle.high,
       limits::size.low,          limits::size.high,
+      limits::capsule_length.low, limits::capsule_length.high,
       limits::density.low,       limits::density.high,
       limits::friction.low,      limits::friction.high,
       limits::speed.low,         limits::speed.high,

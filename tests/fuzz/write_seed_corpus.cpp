@@ -1,7 +1,7 @@
 // write_seed_corpus <folder>: every built-in scene as a scene file, <folder>/<name>.json, the
 // seeds from which scene_fuzzer starts (beside the bad-scene catalogue and the regressions).
-// The 20-row pyramid (63 kB, 210 bodies) is past the fuzzer's bounds (run_fuzzer.sh), so a
-// 4-row one is written too.
+// The 20-row pyramid (63 kB, 210 bodies) and the 10-row hexagon pyramid are past the fuzzer's
+// bounds (run_fuzzer.sh), so a 4-row and a 3-row one are written too.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   }
   const std::filesystem::path folder = argv[1];
   try {
-    std::vector<std::string> names = {"pyramid:4"};
+    std::vector<std::string> names = {"pyramid:4", "hexagon-pyramid:3"};
     for (const lamina::BuiltinScene& entry : lamina::builtin_scene_list()) {
       names.push_back(entry.name);
     }
