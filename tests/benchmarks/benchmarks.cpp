@@ -1,5 +1,5 @@
-// Issue 8's benchmarks: Lamina beside Box2D 2.4.1 on pyramids of boxes (pyramid_runs.h), then the
-// tables of docs/performance.md (report.h).
+// Issue 8's benchmarks: Lamina beside Box2D 2.4.1 on pyramids of boxes (pyramid_runs.h), and
+// issue 20's on pyramids of hexagons; then the tables of docs/performance.md (report.h).
 //
 //   lamina_benchmarks [--report=FOLDER] [--doc=FILE.md] [Google Benchmark flags]
 //
@@ -28,24 +28,31 @@ Measurements measurements;  // every repetition's numbers, for the tables at the
 void record(benchmark::State& state, const RunKey& key, const PyramidRun& run) {
   // the manual time is the step's: Google Benchmark's "Time" column is ms per step
   state.SetIterationTime(run.ms_per_step / 1e3);
-  state.counters["boxes"] = run.boxes;
+  state.counters["bodies"] = run.bodies;
   state.counters["contact_points"] = run.contact_points;
   state.counters["standing"] = run.standing() ? 1 : 0;
   measurements.runs[key].push_back(run);
 }
 
-void lamina_pyramid(benchmark::State& state) {
+// Lamina on a pyramid of that shape: range(0) bodies in the base, range(1) sweeps per step.
+void lamina_run(benchmark::State& state, PyramidShape shape) {
   const int base = static_cast<int>(state.range(0));
   const int iterations = static_cast<int>(state.range(1));
   for (auto _ : state) {
-    record(state, {"Lamina", base, iterations}, run_lamina_pyramid(base, iterations));
+    record(state, {"Lamina", base, iterations, shape}, run_lamina_pyramid(shape, base, iterations));
   }
 }
 
-void box2d_pyramid(benchmark::State& state) {
+// Box2D on a pyramid of that shape: range(0) bodies in the base, 8 / 3 iterations.
+void box2d_run(benchmark::State& state, PyramidShape shape) {
   const int base = static_cast<int>(state.range(0));
-  for (auto _ : state) record(state, {"Box2D", base, 8}, run_box2d_pyramid(base));
+  for (auto _ : state) record(state, {"Box2D", base, 8, shape}, run_box2d_pyramid(shape, base));
 }
+
+void lamina_pyramid(benchmark::State& state) { lamina_run(state, PyramidShape::boxes); }
+void box2d_pyramid(benchmark::State& state) { box2d_run(state, PyramidShape::boxes); }
+void lamina_hexagon_pyramid(benchmark::State& state) { lamina_run(state, PyramidShape::hexagons); }
+void box2d_hexagon_pyramid(benchmark::State& state) { box2d_run(state, PyramidShape::hexagons); }
 
 // Base 20 and 40 at the recommended 10 sweeps and at Box2D's 8; the scaling bases at 8.
 BENCHMARK(lamina_pyramid)
@@ -63,6 +70,24 @@ BENCHMARK(box2d_pyramid)
     ->Arg(20)
     ->Arg(40)
     ->Arg(80)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Repetitions(7)
+    ->Unit(benchmark::kMillisecond);
+
+// Hexagon pyramids at Box2D's sweeps, both engines, bases 10, 20 and 40.
+BENCHMARK(lamina_hexagon_pyramid)
+    ->ArgNames({"base", "iterations"})
+    ->ArgsProduct({{10, 20, 40}, {8}})
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Repetitions(7)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(box2d_hexagon_pyramid)
+    ->ArgName("base")
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(40)
     ->UseManualTime()
     ->Iterations(1)
     ->Repetitions(7)
@@ -110,7 +135,7 @@ int main(int argc, char** argv) {
     measurements.warm_starts.push_back(measure_warm_start(40, 100, 3, {0.1, 0.01}, 5000));
     measurements.load_after = load_average();
     const Tables tables = make_tables(measurements);
-    for (const char* name : {"machine", "pyramids", "scaling", "warm_start"}) {
+    for (const char* name : {"machine", "pyramids", "scaling", "warm_start", "hexagons"}) {
       std::cout << "\n" << tables.at(name);
     }
     if (!report.empty()) write_tables(tables, report);

@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "constraints/pgs_solver.h"
@@ -36,14 +37,15 @@ void time_steps(Step&& step, PyramidRun& run) {
   run.wall_ms_per_step = wall.count() / timed_steps;
 }
 
-// The apex (the last body, the top box) and the largest sideways move of any dynamic body.
+// The apex (the last body, the top box or hexagon) and the largest sideways move of any dynamic
+// body.
 void measure_standing(const Scene& scene, const Positions& start, const Positions& end,
                       PyramidRun& run) {
   const size_t apex = scene.bodies.size() - 1;
   run.apex_shift = std::hypot(end[apex][0] - start[apex][0], end[apex][1] - start[apex][1]);
   for (size_t i = 0; i < scene.bodies.size(); ++i) {
     if (scene.bodies[i].is_static) continue;
-    ++run.boxes;
+    ++run.bodies;
     run.largest_sideways = std::max(run.largest_sideways, std::abs(end[i][0] - start[i][0]));
   }
 }
@@ -71,14 +73,23 @@ double sweeps_to(const std::vector<double>& residuals, double target, int max_sw
 
 }  // namespace
 
+std::string shape_name(PyramidShape shape) {
+  return shape == PyramidShape::boxes ? "boxes" : "hexagons";
+}
+
+Scene pyramid_of(PyramidShape shape, int base) {
+  if (shape == PyramidShape::boxes) return pyramid_scene(base);
+  return builtin_scene("hexagon-pyramid:" + std::to_string(base));
+}
+
 double PyramidRun::us_per_row_sweep() const {
   const double row_sweeps = static_cast<double>(velocity_rows) * velocity_iterations +
                             static_cast<double>(position_rows) * position_iterations;
   return 1e3 * ms_per_step / row_sweeps;
 }
 
-PyramidRun run_lamina_pyramid(int base, int iterations) {
-  Scene scene = pyramid_scene(base);
+PyramidRun run_lamina_pyramid(PyramidShape shape, int base, int iterations) {
+  Scene scene = pyramid_of(shape, base);
   scene.solver = "pgs";  // the text's PGS with Lamina's additions, as the report measures it
   WorldSettings settings = world_settings(scene);
   settings.step.iterations = iterations;
@@ -100,8 +111,8 @@ PyramidRun run_lamina_pyramid(int base, int iterations) {
   return run_pyramid(scene, [&] { world.step(); }, where, count_rows);
 }
 
-PyramidRun run_box2d_pyramid(int base) {
-  const Scene scene = pyramid_scene(base);
+PyramidRun run_box2d_pyramid(PyramidShape shape, int base) {
+  const Scene scene = pyramid_of(shape, base);
   Box2dScene box2d = make_box2d_scene(scene);
   const auto where = [&] {
     Positions p;

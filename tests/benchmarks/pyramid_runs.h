@@ -1,15 +1,22 @@
-// The issue's pyramid run by Lamina and by Box2D 2.4.1 from the same Scene, measured alike.
+// The issue's pyramid run by Lamina and by Box2D 2.4.1 from the same Scene, measured alike; and
+// issue 20's pyramid of hexagons, run and measured the same way.
 //
-//   scene     pyramid_scene(base): boxes of half extents 0.5 placed touching, a static ground
-//             box, friction 0.6, Δt = 1/60 (engine/scene/builtin_scenes.cpp)
+//   scene     boxes: pyramid_scene(base): boxes of half extents 0.5 placed touching, a static
+//             ground box, friction 0.6, Δt = 1/60 (engine/scene/builtin_scenes.cpp)
+//             hexagons: builtin_scene("hexagon-pyramid:N"): regular hexagons of circumradius
+//             0.5 m as a honeycomb, each row in the gaps of the row below, N(N + 1)/2 of them
+//             (convex polygons: Lamina's narrow phase takes them through GJK and EPA)
 //   Box2D     8 velocity / 3 position iterations, continuous collision off, sleeping off
 //   time      mean CPU time of the thread per step over the 500 steps after the first (CPU
 //             time, not wall-clock: other processes on the machine do not count)
-//   standing  after 10 s (600 steps): the apex within 0.2 m of its start and no box moved more
-//             than 0.1 m sideways (issue 8's bar)
+//   standing  after 10 s (600 steps): the apex within 0.2 m of its start and no body moved more
+//             than 0.1 m sideways (issue 8's bar, for either shape)
 #pragma once
 
+#include <string>
 #include <vector>
+
+#include "scene/scene.h"
 
 namespace lamina {
 
@@ -18,8 +25,17 @@ inline constexpr int standing_steps = 600;  // 10 s at Δt = 1/60
 inline constexpr double apex_bar = 0.2;     // m, the apex's largest distance from its start
 inline constexpr double sideways_bar = 0.1; // m, any box's largest sideways displacement
 
+// What the pyramid is built of.
+enum class PyramidShape { boxes, hexagons };
+
+// "boxes" or "hexagons", for tables and file names.
+std::string shape_name(PyramidShape shape);
+
+// The pyramid of that shape with `base` bodies in its base (the apex is the scene's last body).
+Scene pyramid_of(PyramidShape shape, int base);
+
 struct PyramidRun {
-  int boxes = 0;                  // dynamic bodies
+  int bodies = 0;                 // dynamic bodies: the boxes or hexagons
   double ms_per_step = 0.0;       // mean CPU time per step, in ms
   double wall_ms_per_step = 0.0;  // the same in wall-clock time, in ms
   int contact_points = 0;         // at the end of the timed steps
@@ -28,7 +44,7 @@ struct PyramidRun {
   int velocity_iterations = 0;    // sweeps of the velocity solve
   int position_iterations = 0;    // sweeps of the position solve
   double apex_shift = 0.0;        // |apex(10 s) − apex(0)|, in m
-  double largest_sideways = 0.0;  // max over boxes of |x(10 s) − x(0)|, in m
+  double largest_sideways = 0.0;  // max over bodies of |x(10 s) − x(0)|, in m
 
   bool standing() const { return apex_shift <= apex_bar && largest_sideways <= sideways_bar; }
   // The step's time spread over every row of every sweep, in µs: linear growth keeps it flat.
@@ -36,9 +52,9 @@ struct PyramidRun {
 };
 
 // Lamina (World, the method `pgs`) with the given PGS sweeps per step; position sweeps stay 3.
-PyramidRun run_lamina_pyramid(int base, int iterations);
+PyramidRun run_lamina_pyramid(PyramidShape shape, int base, int iterations);
 // Box2D 2.4.1 at 8 velocity / 3 position iterations.
-PyramidRun run_box2d_pyramid(int base);
+PyramidRun run_box2d_pyramid(PyramidShape shape, int base);
 
 // PGS sweeps to reach ‖W‖ ≤ r ‖W(λ = 0)‖ on the velocity MLCP of the resting pyramid for a few
 // residuals r, starting from the contact cache's λ (warm) and from zero (cold), averaged over

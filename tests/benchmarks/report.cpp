@@ -61,9 +61,16 @@ std::optional<Summary> summary(const Measurements& m, const RunKey& key) {
 
 RunKey box2d_key(int base) { return {"Box2D", base, box2d_iterations}; }
 
-std::vector<int> bases(const Measurements& m) {
+// An engine on the hexagon pyramid, at Box2D's sweeps (8 / 3) for both.
+RunKey hexagon_key(const std::string& engine, int base) {
+  return {engine, base, box2d_iterations, PyramidShape::hexagons};
+}
+
+// The bases measured for pyramids of that shape, in increasing order.
+std::vector<int> bases(const Measurements& m, PyramidShape shape) {
   std::vector<int> out;
   for (const auto& [key, runs] : m.runs) {
+    if (key.shape != shape) continue;
     if (std::find(out.begin(), out.end(), key.base) == out.end()) out.push_back(key.base);
   }
   std::sort(out.begin(), out.end());
@@ -96,6 +103,11 @@ std::string standing_cells(const PyramidRun& run) {
          (run.standing() ? "yes" : "no");
 }
 
+// "0.833 (0.753–0.855)": the median CPU ms per step and the fastest and slowest repetitions.
+std::string ms_cells(const Summary& s) {
+  return fixed(s.ms, 3) + " (" + fixed(s.ms_min, 3) + "–" + fixed(s.ms_max, 3) + ")";
+}
+
 // "0.83× — met" or "1.12× — missed by 0.12 (12 %)" against a bar.
 std::string against(double ratio, double bar) {
   if (ratio <= bar) return fixed(ratio, 2) + "× ≤ " + fixed(bar, 1) + ": met";
@@ -115,10 +127,9 @@ void pyramid_rows(const Measurements& m, int base, std::ostringstream& out,
     const std::string ratio = lamina && box2d ? fixed(s->ms / box2d->ms, 2) + "× (" +
                                                     fixed(s->ms_min / box2d->ms_min, 2) + "×)"
                                               : "–";
-    out << "| " << base << " (" << s->run.boxes << " boxes) | " << key.engine
+    out << "| " << base << " (" << s->run.bodies << " boxes) | " << key.engine
         << (lamina && key.iterations == recommended_iterations ? " (recommended)" : "") << " | "
-        << key.iterations << " / " << s->run.position_iterations << " | " << fixed(s->ms, 3)
-        << " (" << fixed(s->ms_min, 3) << "–" << fixed(s->ms_max, 3) << ") | "
+        << key.iterations << " / " << s->run.position_iterations << " | " << ms_cells(*s) << " | "
         << fixed(s->wall_ms, 3) << " | " << ratio << " | " << standing_cells(s->run) << " |\n";
     if (lamina && box2d && key.iterations == box2d_iterations) {
       verdicts << "- base " << base << ", equal sweeps (8 / 3), medians: Lamina ÷ Box2D = "
@@ -141,7 +152,7 @@ std::string pyramids_table(const Measurements& m) {
 // Least-squares slope of ln(ms) against ln(velocity rows): 1 is linear growth.
 std::optional<double> growth_exponent(const Measurements& m, const std::string& engine) {
   std::vector<std::pair<double, double>> points;
-  for (const int base : bases(m)) {
+  for (const int base : bases(m, PyramidShape::boxes)) {
     const std::optional<Summary> s =
         summary(m, {engine, base, box2d_iterations});
     if (s) points.emplace_back(std::log(s->run.velocity_rows), std::log(s->ms));
@@ -159,11 +170,11 @@ std::string scaling_table(const Measurements& m) {
   out << "| base | boxes | contact points, Lamina / Box2D | velocity rows, Lamina / Box2D | "
          "Lamina ms per step | Box2D ms per step | Lamina ÷ Box2D | Lamina µs per row-sweep | "
          "Box2D µs per row-sweep |\n|---|---|---|---|---|---|---|---|---|\n";
-  for (const int base : bases(m)) {
+  for (const int base : bases(m, PyramidShape::boxes)) {
     const std::optional<Summary> l = summary(m, {"Lamina", base, box2d_iterations});
     const std::optional<Summary> b = summary(m, box2d_key(base));
     if (!l || !b) continue;
-    out << "| " << base << " | " << l->run.boxes << " | " << l->run.contact_points << " / "
+    out << "| " << base << " | " << l->run.bodies << " | " << l->run.contact_points << " / "
         << b->run.contact_points << " | " << l->run.velocity_rows << " / " << b->run.velocity_rows
         << " | " << fixed(l->ms, 3) << " | " << fixed(b->ms, 3) << " | " << fixed(l->ms / b->ms, 2)
         << "× | " << fixed(l->run.us_per_row_sweep(), 4) << " | "
@@ -200,14 +211,63 @@ std::string warm_start_table(const Measurements& m) {
   return out.str();
 }
 
-std::string pyramids_csv(const Measurements& m) {
+// "0.257 / 0.133": one number of each engine's pyramid, Lamina's first.
+std::string pair_cell(double lamina, double box2d) {
+  return fixed(lamina, 3) + " / " + fixed(box2d, 3);
+}
+
+// Hexagons ÷ boxes of the same count (the box pyramid of the same base, 8 / 3 sweeps) for one
+// engine, medians: "1.93×", or "–" without the box run.
+std::string against_boxes(const Measurements& m, const std::string& engine, int base,
+                          const Summary& hexagons) {
+  const std::optional<Summary> boxes = summary(m, {engine, base, box2d_iterations});
+  return boxes ? fixed(hexagons.ms / boxes->ms, 2) + "×" : "–";
+}
+
+// The hexagon pyramids, a line per base: both engines at 8 / 3 sweeps side by side, then each
+// engine's time against its box pyramid of the same count.
+std::string hexagons_table(const Measurements& m) {
   std::ostringstream out;
-  out << "engine,base,boxes,velocity_iterations,position_iterations,repetitions,ms_per_step,"
+  std::string boxes;  // "base 10, Lamina 1.93× and Box2D 1.20×; base 20, …"
+  out << "| base | hexagons | contact points, Lamina / Box2D | Lamina CPU ms per step, median "
+         "(range) | Box2D CPU ms per step, median (range) | Lamina ÷ Box2D, medians (fastest "
+         "runs) | 10 s: apex moved (m), Lamina / Box2D | 10 s: largest sideways move (m), "
+         "Lamina / Box2D | standing, Lamina / Box2D |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const int base : bases(m, PyramidShape::hexagons)) {
+    const std::optional<Summary> l = summary(m, hexagon_key("Lamina", base));
+    const std::optional<Summary> b = summary(m, hexagon_key("Box2D", base));
+    if (!l || !b) continue;
+    out << "| " << base << " | " << l->run.bodies << " | " << l->run.contact_points << " / "
+        << b->run.contact_points << " | " << ms_cells(*l) << " | " << ms_cells(*b) << " | "
+        << fixed(l->ms / b->ms, 2) << "× (" << fixed(l->ms_min / b->ms_min, 2) << "×) | "
+        << pair_cell(l->run.apex_shift, b->run.apex_shift) << " | "
+        << pair_cell(l->run.largest_sideways, b->run.largest_sideways) << " | "
+        << (l->run.standing() ? "yes" : "no") << " / " << (b->run.standing() ? "yes" : "no")
+        << " |\n";
+    boxes += (boxes.empty() ? " base " : "; base ") + std::to_string(base) + ", Lamina " +
+             against_boxes(m, "Lamina", base, *l) + " and Box2D " +
+             against_boxes(m, "Box2D", base, *b);
+  }
+  out << "\nStanding: the box pyramid's bar, the apex within " << fixed(apex_bar, 1)
+      << " m of its start and no hexagon moved more than " << fixed(sideways_bar, 1)
+      << " m sideways. CPU time per step against the box pyramid of the same count (the same "
+         "base, 8 / 3 sweeps, this run), medians, hexagons ÷ boxes:"
+      << boxes << ".\n";
+  return out.str();
+}
+
+// Every benchmark on pyramids of that shape, a line each; the third column counts the bodies
+// under the shape's name ("boxes", "hexagons").
+std::string runs_csv(const Measurements& m, PyramidShape shape) {
+  std::ostringstream out;
+  out << "engine,base," << shape_name(shape)
+      << ",velocity_iterations,position_iterations,repetitions,ms_per_step,"
          "ms_per_step_min,ms_per_step_max,wall_ms_per_step,contact_points,apex_shift_m,"
          "largest_sideways_m,standing\n";
   for (const auto& [key, runs] : m.runs) {
+    if (key.shape != shape) continue;
     const Summary s = *summary(m, key);
-    out << key.engine << ',' << key.base << ',' << s.run.boxes << ',' << key.iterations << ','
+    out << key.engine << ',' << key.base << ',' << s.run.bodies << ',' << key.iterations << ','
         << s.run.position_iterations << ',' << s.repetitions << ',' << fixed(s.ms, 4) << ','
         << fixed(s.ms_min, 4) << ',' << fixed(s.ms_max, 4) << ',' << fixed(s.wall_ms, 4) << ','
         << s.run.contact_points << ',' << fixed(s.run.apex_shift, 4) << ','
@@ -220,11 +280,11 @@ std::string scaling_csv(const Measurements& m) {
   std::ostringstream out;
   out << "base,boxes,lamina_ms_per_step,box2d_ms_per_step,lamina_velocity_rows,"
          "box2d_velocity_rows,lamina_us_per_row_sweep,box2d_us_per_row_sweep\n";
-  for (const int base : bases(m)) {
+  for (const int base : bases(m, PyramidShape::boxes)) {
     const std::optional<Summary> l = summary(m, {"Lamina", base, box2d_iterations});
     const std::optional<Summary> b = summary(m, box2d_key(base));
     if (!l || !b) continue;
-    out << base << ',' << l->run.boxes << ',' << fixed(l->ms, 4) << ',' << fixed(b->ms, 4) << ','
+    out << base << ',' << l->run.bodies << ',' << fixed(l->ms, 4) << ',' << fixed(b->ms, 4) << ','
         << l->run.velocity_rows << ',' << b->run.velocity_rows << ','
         << fixed(l->run.us_per_row_sweep(), 5) << ',' << fixed(b->run.us_per_row_sweep(), 5)
         << '\n';
@@ -261,14 +321,20 @@ std::string read_file(const std::string& path) {
 }  // namespace
 
 bool RunKey::operator<(const RunKey& o) const {
-  return std::tie(engine, base, iterations) < std::tie(o.engine, o.base, o.iterations);
+  return std::tie(shape, engine, base, iterations) <
+         std::tie(o.shape, o.engine, o.base, o.iterations);
 }
 
 Tables make_tables(const Measurements& m) {
-  return {{"machine", machine_table(m)},         {"pyramids", pyramids_table(m)},
-          {"scaling", scaling_table(m)},         {"warm_start", warm_start_table(m)},
-          {"pyramids.csv", pyramids_csv(m)},     {"scaling.csv", scaling_csv(m)},
-          {"warm_start.csv", warm_start_csv(m)}};
+  return {{"machine", machine_table(m)},
+          {"pyramids", pyramids_table(m)},
+          {"scaling", scaling_table(m)},
+          {"warm_start", warm_start_table(m)},
+          {"hexagons", hexagons_table(m)},
+          {"pyramids.csv", runs_csv(m, PyramidShape::boxes)},
+          {"scaling.csv", scaling_csv(m)},
+          {"warm_start.csv", warm_start_csv(m)},
+          {"hexagons.csv", runs_csv(m, PyramidShape::hexagons)}};
 }
 
 void write_tables(const Tables& tables, const std::string& folder) {

@@ -12,9 +12,10 @@ namespace lamina {
 
 // Which engine at which pyramid and sweeps; Box2D's sweeps are always 8 / 3.
 struct RunKey {
-  std::string engine;  // "Lamina" or "Box2D"
-  int base = 0;        // boxes in the pyramid's base
-  int iterations = 0;  // velocity sweeps per step
+  std::string engine;                        // "Lamina" or "Box2D"
+  int base = 0;                              // bodies in the pyramid's base
+  int iterations = 0;                        // velocity sweeps per step
+  PyramidShape shape = PyramidShape::boxes;  // what the pyramid is built of
 
   bool operator<(const RunKey& o) const;
 };
@@ -26,8 +27,8 @@ struct Measurements {
   std::string load_after;                          // and when they ended
 };
 
-// Named tables: "machine", "pyramids", "scaling", "warm_start" (Markdown), and the CSV files
-// "pyramids.csv", "scaling.csv", "warm_start.csv".
+// Named tables: "machine", "pyramids", "scaling", "warm_start", "hexagons" (Markdown), and the
+// CSV files "pyramids.csv", "scaling.csv", "warm_start.csv", "hexagons.csv".
 using Tables = std::map<std::string, std::string>;
 Tables make_tables(const Measurements& measurements);
 
