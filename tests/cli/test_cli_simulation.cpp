@@ -186,6 +186,7 @@ TEST_SUITE("LaminaRun") {
     RunOptions options;
     options.scene = "heavy.json";
     options.steps = 10000000;  // the most: the run stops at the step that diverges
+    options.allow_large = true;  // 10⁷ frames asked for, none drawn
     options.trace = scratch.path() / "trace.jsonl";
     options.frames = scratch.path() / "frames";
     options.render.size = {64, 36};

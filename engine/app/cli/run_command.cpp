@@ -8,6 +8,7 @@
 #include "app/cli/scene_source.h"
 #include "app/cli/signals.h"
 #include "app/cli/simulation.h"
+#include "app/cli/work_limits.h"
 #include "app/harness/format.h"
 #include "app/harness/viewer.h"
 #include "app/views/contact/world_explanation.h"
@@ -203,6 +204,12 @@ void run_scene(const RunOptions& o) { run_scene(load_scene(o.scene), o); }
 void run_scene(Scene scene, const RunOptions& o) {
   const WorldSettings settings = run_settings(o, scene);
   const long steps = o.steps.value_or(scene.steps);
+  if (!o.allow_large) {
+    const long frames = o.explain ? 0
+                                  : ((o.frames || o.render.video) ? (steps + o.every - 1) / o.every : 0) +
+                                        (o.viewer ? steps : 0);
+    check_work(scene, o.explain ? *o.explain + 1 : steps, frames, o.render.size, o.scene);
+  }
   Simulation simulation(std::move(scene), settings, o.scene);
   note_stop_signals();
   if (o.explain) return explain_step(simulation, *o.explain, o.explain_json);

@@ -32,6 +32,7 @@ struct RunOptions {
   std::optional<std::array<long, 2>> viewer_steps;  // --viewer-steps A:B
   std::optional<long> explain;                  // --explain STEP
   bool explain_json = false;                    // --explain-format json
+  bool allow_large = false;                     // --allow-large: lift work_limits.h's limits
 };
 
 // Runs it; prints one summary line on standard output (--explain: the step instead).
