@@ -1,5 +1,5 @@
 // Chapter 4 — the contact model. Five scenes, each frame showing the bodies at t with the
-// contacts the step from t found and the λ it solved for them:
+// contacts the step from t found and the λ it solved for them, and two beyond the text:
 //   contact_geometry Fig 4-1: x1, r1, x2, r2 and n1 of the deepest point, a tilted box landing on
 //                    a fixed box, with eq. 4-1's C computed from them (ch4/contact_geometry.cpp);
 //   landing          Fig 4-2..4-5 told by the text's own method (--solver text, the default
@@ -11,7 +11,11 @@
 //   text_vs_pgs      the same drop by the text's method and by Lamina's (pgs), side by side, and
 //                    the plot penetration.png (deepest corner below the ground against t);
 //   friction_ramp    a box that sticks (tan θ < μ) and one that slides at g (sin θ − μ cos θ)
-//                    (--no-cache: without the cache); in ch4/friction_ramp.cpp.
+//                    (--no-cache: without the cache); in ch4/friction_ramp.cpp;
+//   gjk, epa         beyond the text, the collision detection it leaves to [9] and [10]: GJK on
+//                    a hexagon and a triangle apart and EPA on the same pair overlapping, one
+//                    frame per iteration with the engine's numbers (ch4/gjk_scene.cpp,
+//                    ch4/epa_scene.cpp; the pair drawn by ch4/pair_figure.cpp).
 // The landing is the built-in scene box-on-ground-tilted (docs/ch4-contact-model.md), so
 // `lamina run box-on-ground-tilted --solver text --explain K` and `04_contact_model --explain K`
 // explain the same step.
@@ -24,6 +28,7 @@
 #include "ch4/contact_geometry.h"
 #include "ch4/drop_run.h"
 #include "ch4/friction_ramp.h"
+#include "ch4/gjk_epa.h"
 #include "contact/solvers.h"
 
 namespace {
@@ -160,7 +165,8 @@ int main(int argc, char** argv) {
       "04_contact_model",
       "ch4",
       "Chapter 4: the contact cache of Fig 4-2..4-5 (a tilted box landing by the text's method, "
-      "cache on vs off, text vs pgs) and a friction ramp, with the penetration plot",
+      "cache on vs off, text vs pgs) and a friction ramp, with the penetration plot; beyond the "
+      "text, GJK and EPA step by step on one pair of polygons",
       {render::Overlay::contacts, render::Overlay::normals, render::Overlay::forces,
        render::Overlay::centres}};
   info.has_cache = true;
@@ -176,5 +182,6 @@ int main(int argc, char** argv) {
              Side{"text", true, render::palette::blue, "cache on"},
              Side{"text", false, render::palette::vermillion, "cache off"});
        },
-       tutorial::scene<TextVsPgs>(), ch4::friction_ramp_scene()});
+       tutorial::scene<TextVsPgs>(), ch4::friction_ramp_scene(), ch4::gjk_scene(),
+       ch4::epa_scene()});
 }

@@ -14,7 +14,7 @@
 // the reference face and the depth of a vertex inside the reference box is −(n_f · (v − x_r) − h_f).
 // Box–circle and circle–circle are closed forms. Every other pair (a polygon or a capsule in it)
 // goes through GJK and EPA (gjk.h, convex_contact.cpp); box–box keeps its separating axes as the
-// fast path, checked against GJK/EPA in tests/test_gjk_contact.cpp.
+// fast path, checked against GJK/EPA in tests/test_collision.cpp.
 #pragma once
 
 #include <array>

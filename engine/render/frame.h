@@ -148,7 +148,8 @@ struct LegendEntry {
 
 struct Frame {
   std::string caption;  // top left, e.g. "Fig 2-1  Thrown box (eq. 2-3..2-6)"
-  std::string status;   // top right, e.g. "t = 0.500 s   step 30"
+  std::string status;   // top right, e.g. "t = 0.500 s   step 30" (the renderer writes t and the step
+                        // when a scene leaves it empty)
 
   std::vector<Ground> grounds;
   std::vector<Path> paths;

@@ -250,7 +250,8 @@ int FrameRenderer::render(const std::string& name, const render::Rect& view, dou
   std::optional<VideoEncoder> video;
   if (request_.video) video.emplace(video_path(name), request_.size, request_.fps);
   while (next(frame = render::Frame(), step)) {
-    frame.status = status_line(step, dt);
+    // t and the step, unless the scene's frame says where it is itself (an algorithm's iteration)
+    if (frame.status.empty()) frame.status = status_line(step, dt);
     render::Renderer& renderer = pipeline_->renderer;
     if (request_.check_layout) {  // paint and check; draw and write nothing
       for (const std::string& overlap : render::layout_overlaps(renderer.paint(frame, camera, request_.overlays).layout())) {

@@ -26,7 +26,8 @@ class Scene {
   virtual SceneInfo info() const = 0;
   // Advances the simulation by one time step Δt.
   virtual void step() = 0;
-  // Fills the frame from the current state (the harness adds the status line).
+  // Fills the frame from the current state (the harness adds the status line, t and the step,
+  // unless the scene writes one of its own: an algorithm's iteration).
   virtual void draw(render::Frame& frame) const = 0;
   // What the engine computed in the last step (the initial state before the first).
   virtual Explanation explain() const = 0;
