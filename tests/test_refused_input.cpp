@@ -38,8 +38,8 @@ Scene post_tied_to_ground() {
 
 TEST_SUITE("RefusedInput") {
   TEST_CASE("a value just past either end of a scene limit is refused with its path and range") {
-    // Each case edits one value of a valid scene (ground, box, disc, a revolute and a distance
-    // joint) to the next double beyond an end of its range; the ends themselves are accepted.
+    // Each case edits one value of a valid scene (ground, box, disc, capsule, a revolute and a
+    // distance joint) to the next double beyond an end of its range; the ends themselves are accepted.
     namespace limits = scene_limits;
     struct Limit {
       const char* path;
@@ -62,6 +62,10 @@ TEST_SUITE("RefusedInput") {
          [](Scene& s, double v) { s.bodies[1].shape.half_extents[1] = v; }},
         {"bodies[2].shape.radius", limits::size,
          [](Scene& s, double v) { s.bodies[2].shape.radius = v; }},
+        {"bodies[3].shape.radius", limits::size,
+         [](Scene& s, double v) { s.bodies[3].shape.radius = v; }},
+        {"bodies[3].shape.length", limits::capsule_length,
+         [](Scene& s, double v) { s.bodies[3].shape.length = v; }},
         {"bodies[1].density", limits::density, [](Scene& s, double v) { s.bodies[1].density = v; }},
         {"bodies[1].friction", limits::friction,
          [](Scene& s, double v) { s.bodies[1].friction = v; }},
@@ -80,6 +84,10 @@ TEST_SUITE("RefusedInput") {
     };
     Scene valid = stack(1);
     valid.bodies.push_back(circle("disc", {3.0, 0.5}, 0.5));
+    BodyDescription rod_shaped = circle("capsule", {-3.0, 0.5}, 0.5);
+    rod_shaped.shape.type = ShapeType::capsule;
+    rod_shaped.shape.length = 1.0;
+    valid.bodies.push_back(rod_shaped);
     JointDescription pin;
     pin.bodies = {"ground", "box0"};
     pin.anchor = {0.0, 1.0};

@@ -1,5 +1,6 @@
 #include "constraints/lemke.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -84,6 +85,19 @@ class Tableau {
   std::vector<int> basis_;  // basis_[row]: the variable basic in that row
 };
 
+// Whether z solves the LCP to round-off: z ≥ 0, w = M z + q ≥ 0 and min(z_i, w_i) = 0, each
+// to 1e-9 of the problem's scale max(1, |q|∞, |M|∞ |z|∞).
+bool solves(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, const Eigen::VectorXd& z) {
+  const Eigen::VectorXd w = M * z + q;
+  const double scale = std::max({1.0, q.cwiseAbs().maxCoeff(),
+                                 M.cwiseAbs().maxCoeff() * z.cwiseAbs().maxCoeff()});
+  const double tolerance = 1e-9 * scale;
+  for (int i = 0; i < z.size(); ++i) {
+    if (z[i] < -tolerance || w[i] < -tolerance || std::min(z[i], w[i]) > tolerance) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 LemkeResult solve_lcp_lemke(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, int max_pivots) {
@@ -117,7 +131,12 @@ LemkeResult solve_lcp_lemke(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, 
     t.pivot(row, entering);
     ++result.pivots;
     if (leaving == t.z0()) {
-      result.z = t.z();
+      const Eigen::VectorXd z = t.z();
+      if (solves(M, q, z)) {
+        result.z = z;
+      } else {
+        result.status = LemkeStatus::inaccurate;
+      }
       return result;
     }
   }

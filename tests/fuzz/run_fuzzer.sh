@@ -1,13 +1,16 @@
 #!/bin/sh
-# run_fuzzer.sh <scene_fuzzer> <write_seed_corpus> <work> <seconds> <regressions> <seed folder>...
+# run_fuzzer.sh <fuzzer> <seed writer or -> <work> <seconds> <regressions> <seed folder>...
 #
-# First runs every file of <regressions> (tests/data/fuzz/regressions) once, whole, so that a
-# crash found before fails at once, however long its file. Then fuzzes scene files for
-# <seconds>: writes the built-in scenes into <work>/seeds and runs libFuzzer over <work>/corpus
-# (where it keeps new inputs, kept between runs), <work>/seeds, <regressions> and the seed
-# folders given (the bad-scene catalogue). Exits non-zero on a crash, a sanitizer report, a leak
+# First runs every file of <regressions> (tests/data/fuzz/regressions for scene_fuzzer,
+# physics_regressions for physics_fuzzer) once, whole, so that a crash found before fails at
+# once, however long its file. Then fuzzes for <seconds>: writes the seeds (scene_fuzzer's: the
+# built-in scenes) into <work>/seeds unless the writer is "-", and runs libFuzzer over
+# <work>/corpus (where it keeps new inputs, kept between runs), <work>/seeds, <regressions> and
+# the seed folders given (the bad-scene catalogue). Exits non-zero on a crash, a sanitizer report, a leak
 # or an input slower than -timeout; the input is saved as <work>/crashes/<kind>-<sha1>.
 #
+# LAMINA_FUZZ_DICT names a dictionary (-dict) and LAMINA_FUZZ_FLAGS adds libFuzzer flags, each
+# fuzzer's own (tests/fuzz/CMakeLists.txt).
 # Bounds of one execution: -max_len=8192 bytes of scene file (longer seeds are cut to that),
 # -timeout=10 s, -rss_limit_mb=2048; scene_fuzzer.cpp also steps only scenes of at most 64
 # bodies and 1000 iterations.
@@ -19,14 +22,14 @@ set -eu
 fuzzer=$1 seed_writer=$2 work=$3 seconds=$4 regressions=$5
 shift 5
 
-mkdir -p "$work/corpus" "$work/crashes"
-"$seed_writer" "$work/seeds"
+mkdir -p "$work/corpus" "$work/crashes" "$work/seeds"
+[ "$seed_writer" = "-" ] || "$seed_writer" "$work/seeds"
 
 # A sanitizer report stops the run with its stack (the build has -fno-sanitize-recover=all).
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 
 status=0
-"$fuzzer" -timeout=10 -rss_limit_mb=2048 "$regressions"/*.json || status=$?
+"$fuzzer" -timeout=10 -rss_limit_mb=2048 "$regressions"/* || status=$?
 if [ "$status" -ne 0 ]; then
   echo "run_fuzzer.sh: a regression crashed again (exit $status):" \
        "the file named by 'Running:' above." >&2
@@ -34,11 +37,11 @@ if [ "$status" -ne 0 ]; then
 fi
 
 "$fuzzer" -max_total_time="$seconds" -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
-  -dict="$(dirname "$0")/scene.dict" -print_final_stats=1 -artifact_prefix="$work/crashes/" \
+  ${LAMINA_FUZZ_DICT:+-dict="$LAMINA_FUZZ_DICT"} ${LAMINA_FUZZ_FLAGS:-} -print_final_stats=1 -artifact_prefix="$work/crashes/" \
   "$work/corpus" "$work/seeds" "$regressions" "$@" || status=$?
 if [ "$status" -ne 0 ]; then
-  echo "run_fuzzer.sh: scene_fuzzer failed (exit $status); the input is in $work/crashes/." >&2
+  echo "run_fuzzer.sh: $(basename "$fuzzer") failed (exit $status); the input is in $work/crashes/." >&2
   echo "Reproduce: $fuzzer <input>; shrink: $fuzzer -minimize_crash=1 -runs=100000 <input>;" \
-       "then keep it as tests/data/fuzz/regressions/<short-name>.json." >&2
+       "then keep it in $regressions/ under a short name." >&2
   exit "$status"
 fi

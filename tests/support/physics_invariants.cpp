@@ -1,0 +1,249 @@
+#include "support/physics_invariants.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <stdexcept>
+
+#include <Eigen/LU>
+
+#include "constraints/dense_system.h"
+#include "constraints/exact_mlcp.h"
+#include "constraints/pgs_solver.h"
+#include "scene/scene_json.h"
+#include "scene/scene_world.h"
+
+namespace lamina::fuzz {
+namespace {
+
+// Round-off in the bounds: PGS clamps λ_t to ±μ λ_n exactly, the exact and block solvers to the
+// rounding of their pivots and 2 × 2 solves.
+constexpr double bound_relative = 1e-9;
+constexpr double bound_absolute = 1e-9;  // in N
+// PGS is run to ‖W‖ ≤ this (relative to ‖η‖) before its λ is compared with the exact one, and
+// the two must then agree to exact_tolerance relative to max(1, |λ_exact|∞).
+constexpr double pgs_converged = 1e-12;
+constexpr int pgs_sweeps = 20000;
+constexpr double exact_tolerance = 1e-6;
+
+std::string at_step(long step, const std::string& what) {
+  return "step " + std::to_string(step) + ": " + what;
+}
+
+// The first planar component that is not exactly 0, or nothing.
+std::optional<std::string> off_plane(const World& world) {
+  for (std::size_t i = 0; i < world.bodies().size(); ++i) {
+    const RigidBody& b = world.bodies()[i];
+    if (b.x.z() != 0.0 || b.v.z() != 0.0 || b.angular_velocity.x() != 0.0 ||
+        b.angular_velocity.y() != 0.0 || b.q.x() != 0.0 || b.q.y() != 0.0) {
+      return "body " + std::to_string(i) + " left the x–y plane";
+    }
+  }
+  return std::nullopt;
+}
+
+// μ of each pair, from the scene's own friction values (√(μ1 μ2), shape.h's rule).
+double pair_friction(const Scene& scene, const BodyPair& pair) {
+  return std::sqrt(scene.bodies[pair.first].friction * scene.bodies[pair.second].friction);
+}
+
+std::optional<std::string> out_of_bounds(const Scene& scene, const World& world, long& checked) {
+  for (const ContactInfo& c : world.contacts()) {
+    ++checked;
+    const double mu = pair_friction(scene, c.bodies);
+    const double n = c.lambda_normal, t = c.lambda_tangent;
+    if (n < -bound_absolute) return "contact λ_n = " + std::to_string(n) + " N < 0";
+    if (std::abs(t) > mu * n * (1.0 + bound_relative) + bound_absolute) {
+      return "friction |λ_t| = " + std::to_string(std::abs(t)) + " N > μ λ_n = " +
+             std::to_string(mu * n) + " N";
+    }
+  }
+  return std::nullopt;
+}
+
+double moving_mass(const World& world) {
+  double mass = 0.0;
+  for (const RigidBody& b : world.bodies()) {
+    if (!b.is_static()) mass += b.mass;
+  }
+  return mass;
+}
+
+// Σ_c max(0, d_c − slop) over the contacts the last step solved (d = −C at t), in m.
+double corrected_depth(const World& world) {
+  double sum = 0.0;
+  for (const ContactInfo& c : world.contacts()) {
+    sum += std::max(0.0, -c.separation - world.settings().contact.slop);
+  }
+  return sum;
+}
+
+// PGS to convergence beside Lemke on the velocity MLCP of one more step, when J B has full rank
+// (then λ is unique wherever both find one).
+void compare_with_exact(World& world, InvariantReport& report) {
+  WorldReport step;
+  world.step(step);
+  const Mlcp& mlcp = step.velocity.mlcp;
+  const int rows = mlcp.row_count();
+  if (rows == 0 || !has_exact_form(mlcp)) return;
+  const Eigen::MatrixXd JB = dense_jacobian(mlcp) * dense_b_transpose(mlcp).transpose();
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(JB);
+  lu.setThreshold(1e-9);
+  if (lu.rank() < rows) return;
+  const ExactSolution exact = solve_mlcp_exactly(mlcp);
+  if (exact.status != LemkeStatus::solved) return;
+  SweepSettings settings;
+  settings.iterations = pgs_sweeps;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(rows);
+  const double scale = std::max(1.0, mlcp.slack(zero.data()).norm());  // ‖η‖, W at λ = 0
+  settings.tolerance = pgs_converged * scale;
+  const SweepResult pgs = solve_pgs(mlcp, zero, settings);
+  if (mlcp.residual(pgs.lambda.data()) > settings.tolerance) return;
+  report.compared_exact = true;
+  report.exact_difference = (pgs.lambda - exact.lambda).cwiseAbs().maxCoeff() /
+                            std::max(1.0, exact.lambda.cwiseAbs().maxCoeff());
+  if (report.exact_difference > exact_tolerance) {
+    report.violation = "exact: PGS's λ differs from the exact solution's by " +
+                       std::to_string(report.exact_difference) + " (relative)";
+  }
+}
+
+// How far a body moved from `from` to `to`: sideways, up, down, and the turn, in m and rad.
+struct Move {
+  double sideways, up, down, turn;
+};
+Move move_between(const RigidBody& from, const RigidBody& to) {
+  const Vec3 d = to.x - from.x;
+  return {std::abs(d.x()), std::max(d.y(), 0.0), std::max(-d.y(), 0.0),
+          std::abs(std::remainder(planar_angle(to.q) - planar_angle(from.q), 2.0 * M_PI))};
+}
+
+std::string described(const Move& m, const char* when) {
+  return std::string(when) + " it moved " + std::to_string(m.sideways) + " m sideways, " +
+         std::to_string(m.up) + " m up, " + std::to_string(m.down) + " m down and turned " +
+         std::to_string(m.turn) + " rad";
+}
+
+// The resting body: over the whole run it settles within the bounds of its solver, and over the
+// second half it creeps no more than creep_distance / 10 and creep_angle / 10.
+std::optional<std::string> settled(const RigidBody& start, const RigidBody& halfway,
+                                   const RigidBody& end, const World& world,
+                                   const GeneratedScene& generated) {
+  // the text's method and soft-step take a flat face's first contact at a corner
+  const bool corner_first = generated.scene.solver == "text" || generated.scene.solver == "soft-step";
+  const double distance = corner_first ? corner_first_distance : creep_distance;
+  const double angle = corner_first ? corner_first_angle : creep_angle;
+  const double slop = world.settings().contact.slop;
+  const Move whole = move_between(start, end);
+  if (whole.sideways > distance || whole.up > distance || whole.down > slop + distance ||
+      whole.turn > angle) {
+    return described(whole, "over the run");
+  }
+  const Move late = move_between(halfway, end);
+  if (late.sideways > creep_distance / 10 || late.up > creep_distance / 10 ||
+      late.down > creep_distance / 10 || late.turn > creep_angle / 10) {
+    return described(late, "over the second half of the run (creeping)");
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+InvariantReport check_invariants(const GeneratedScene& generated) {
+  InvariantReport report;
+  const std::string text = scene_to_json(generated.scene);
+  Scene scene;
+  try {
+    scene = parse_scene(text, "generated.json");
+  } catch (const SceneError& e) {
+    report.violation = std::string("reader: refused a generated scene: ") + e.what();
+    return report;
+  }
+  if (scene_to_json(scene) != text) {
+    report.violation = "reader: the generated scene does not read back as itself";
+    return report;
+  }
+  std::optional<World> built;
+  try {
+    built.emplace(build_world(scene, world_settings(scene)));
+  } catch (const std::invalid_argument& e) {
+    report.violation = std::string("engine: refused a scene the reader accepts: ") + e.what();
+    return report;
+  }
+  World& world = *built;
+  report.built = true;
+
+  // soft-step clamps friction to μ times the normal impulse of the moment it is swept (Box2D v3's
+  // order); its relax and restitution sweeps change the normal impulse afterwards, so its final
+  // λ need not keep the MLCP's bounds (measured: |λ_t| 3.16 N against μ λ_n = 0.057 N)
+  const bool bounds_apply = scene.solver != "soft-step";
+  const bool energy_applies = generated.passive && scene.joints.empty();
+  const double mass = moving_mass(world);                                 // M, kg
+  const double weight = mass * world.settings().step.gravity.norm();      // M |g|, N
+  const bool baumgarte = world.settings().contact.correction == PositionCorrection::baumgarte;
+  const double start_energy = mechanical_energy(world);
+  const double energy_round_off = 1e-9 * (std::abs(start_energy) + weight * 10.0);
+  // ½ M (|g| Δt)², the warm start's allowance, then Σ_k ΔE_k as the run goes, in J
+  const double impulse = weight * scene.step.dt;  // M |g| Δt, in N·s
+  double allowed = mass > 0.0 ? 0.5 * impulse * impulse / mass : 0.0;
+  report.energy_margin = std::numeric_limits<double>::infinity();
+  std::map<std::string, std::size_t> index_of;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) index_of[scene.bodies[i].name] = i;
+  const std::optional<RigidBody> rest =
+      generated.resting.empty() ? std::nullopt
+                                : std::optional<RigidBody>(world.bodies()[index_of.at(generated.resting)]);
+
+  std::optional<RigidBody> halfway;  // the resting body halfway through the run
+  for (long step = 0; step < generated.steps; ++step) {
+    world.step();
+    report.steps = step + 1;
+    if (rest && step + 1 == generated.steps / 2) {
+      halfway = world.bodies()[index_of.at(generated.resting)];
+    }
+    if (first_non_finite_body(world)) {
+      report.violation = at_step(step, "finite: a body's state is no longer finite");
+      return report;
+    }
+    if (std::optional<std::string> off = off_plane(world)) {
+      report.violation = at_step(step, "planar: " + *off);
+      return report;
+    }
+    if (bounds_apply) {
+      if (std::optional<std::string> bad = out_of_bounds(scene, world, report.bound_checks)) {
+        report.violation = at_step(step, "bounds: " + *bad);
+        return report;
+      }
+    }
+    if (energy_applies) {
+      // ΔE_k = M |g| D + (Baumgarte) ½ M (β D / Δt)², D = Σ_c max(0, d_c − slop)
+      const double depth = corrected_depth(world);
+      allowed += weight * depth;
+      if (baumgarte) {
+        const double push = scene.step.beta * depth / scene.step.dt;  // m/s
+        allowed += 0.5 * mass * push * push;
+      }
+      const double gain = mechanical_energy(world) - start_energy;
+      report.largest_gain = std::max(report.largest_gain, gain);
+      report.energy_margin = std::min(report.energy_margin, allowed - gain);
+      if (gain > allowed + energy_round_off) {
+        report.violation = at_step(step, "energy: E − E0 = " + std::to_string(gain) +
+                                             " J above the " + std::to_string(allowed) +
+                                             " J that undoing penetration may add");
+        return report;
+      }
+    }
+  }
+  if (rest) {
+    const RigidBody& end = world.bodies()[index_of.at(generated.resting)];
+    if (std::optional<std::string> moved = settled(*rest, *halfway, end, world, generated)) {
+      report.violation = "resting: " + *moved;
+      return report;
+    }
+  }
+  if (generated.kind == SceneKind::island) compare_with_exact(world, report);
+  return report;
+}
+
+}  // namespace lamina::fuzz

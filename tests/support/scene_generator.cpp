@@ -1,0 +1,274 @@
+#include "support/scene_generator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "beyond/methods.h"
+#include "contact/shape.h"
+#include "kinematics/mass_properties.h"
+#include "scene/scene_limits.h"
+
+namespace lamina::fuzz {
+
+std::uint8_t Bytes::byte() { return next_ < size_ ? data_[next_++] : 0; }
+
+int Bytes::integer(int low, int high) {
+  const int span = high - low + 1;
+  const int raw = (byte() << 8) | byte();
+  return low + raw % span;
+}
+
+double Bytes::number(double low, double high) {
+  const int raw = (byte() << 8) | byte();
+  return low + (high - low) * raw / 65535.0;
+}
+
+const char* kind_name(SceneKind kind) {
+  switch (kind) {
+    case SceneKind::general: return "general";
+    case SceneKind::resting: return "resting";
+    case SceneKind::island: return "island";
+  }
+  return "?";
+}
+
+namespace {
+
+// The step sizes and sweeps a generated scene may ask for: a lecture's range, not the reader's
+// extremes (tests/test_extreme_scenes.cpp and the loader fuzzer cover those).
+constexpr double step_sizes[] = {1.0 / 60, 1.0 / 120, 1.0 / 30, 1.0 / 240};
+
+BodyDescription ground() {
+  BodyDescription g;
+  g.name = "ground";
+  g.shape.half_extents = {20.0, 0.5};
+  g.position = {0.0, -0.5};
+  g.is_static = true;
+  return g;
+}
+
+// A convex polygon: 3 to 8 points on an ellipse at increasing angles (any such set is convex
+// and counter-clockwise), given about an offset origin, since scene files may do so. The gaps
+// between the angles are at least a third of the mean gap, so that no three points are nearly
+// on one line; a polygon the reader would still refuse (too small) becomes a triangle.
+ShapeDescription polygon(Bytes& b) {
+  ShapeDescription shape;
+  shape.type = ShapeType::polygon;
+  const int k = b.integer(3, Convex::max_vertices);
+  const double a = b.number(0.15, 1.0), c = b.number(0.15, 1.0);
+  std::vector<double> gaps;
+  double total = 0.0;
+  for (int i = 0; i < k; ++i) total += gaps.emplace_back(b.number(1.0, 3.0));
+  const Vec2 origin(b.number(-0.5, 0.5), b.number(-0.5, 0.5));
+  double angle = b.number(0.0, 2.0 * M_PI);
+  for (int i = 0; i < k; ++i) {
+    shape.vertices.push_back(Vec2(a * std::cos(angle), c * std::sin(angle)) - origin);
+    angle += 2.0 * M_PI * gaps[i] / total;
+  }
+  if (polygon_problem(shape.vertices) ||
+      polygon_moments(shape.vertices).area < scene_limits::polygon_area) {
+    shape.vertices = {{-0.3, -0.2}, {0.3, -0.2}, {0.0, 0.3}};
+  }
+  return shape;
+}
+
+ShapeDescription any_shape(Bytes& b) {
+  ShapeDescription shape;
+  switch (b.integer(0, 3)) {
+    case 0:
+      shape.type = ShapeType::box;
+      shape.half_extents = {b.number(0.1, 1.0), b.number(0.1, 1.0)};
+      break;
+    case 1:
+      shape.type = ShapeType::circle;
+      shape.radius = b.number(0.1, 0.8);
+      break;
+    case 2:
+      shape = polygon(b);
+      break;
+    default:
+      shape.type = ShapeType::capsule;
+      shape.radius = b.number(0.08, 0.5);
+      shape.length = b.number(scene_limits::capsule_length.low, 1.5);
+      break;
+  }
+  return shape;
+}
+
+void choose_method(Bytes& b, Scene& scene) {
+  const std::vector<SolverInfo>& methods = method_list();
+  scene.solver = methods[b.integer(0, static_cast<int>(methods.size()) - 1)].name;
+  scene.step.dt = step_sizes[b.integer(0, 3)];
+  scene.step.iterations = b.integer(4, 30);
+}
+
+// A body placed resting on the ground (top at y = 0) on a flat side, at rest: a box on a face,
+// a circle, a capsule lying down, a polygon on the edge nearest its centroid (the foot of the
+// centroid on that edge's line lies inside it, so the polygon stands; one whose foot lies within
+// a tenth of the edge of a corner becomes a box, which stands with room).
+BodyDescription resting_body(Bytes& b) {
+  BodyDescription body;
+  body.name = "resting";
+  body.shape = any_shape(b);
+  body.density = b.number(0.3, 3.0);
+  body.friction = b.number(0.2, 1.0);
+  const ShapeDescription& s = body.shape;
+  if (s.type == ShapeType::box) {
+    body.position = {0.0, s.half_extents.y()};
+  } else if (s.type != ShapeType::polygon) {
+    body.position = {0.0, s.radius};
+  } else {
+    const AreaMoments m = polygon_moments(s.vertices);
+    const int n = static_cast<int>(s.vertices.size());
+    int nearest = 0;
+    double nearest_distance = 1e300;
+    for (int i = 0; i < n; ++i) {
+      const Vec2 edge = (s.vertices[(i + 1) % n] - s.vertices[i]).normalized();
+      const double d = Vec2(edge.y(), -edge.x()).dot(s.vertices[i] - m.centroid);
+      if (d < nearest_distance) {
+        nearest = i;
+        nearest_distance = d;
+      }
+    }
+    const Vec2 from = s.vertices[nearest], to = s.vertices[(nearest + 1) % n];
+    const double along = (m.centroid - from).dot(to - from) / (to - from).squaredNorm();
+    if (along < 0.1 || along > 0.9) {
+      body.shape = ShapeDescription{};
+      body.shape.half_extents = {0.4, 0.3};
+      body.position = {0.0, 0.3};
+      return body;
+    }
+    // Turn the edge to point along +x (counter-clockwise, so the body lies above it), then lift
+    // the vertices' origin so that the edge lies on y = 0.
+    const Vec2 e = to - from;
+    body.angle = -std::atan2(e.y(), e.x());
+    const Vec2 turned(std::cos(body.angle) * from.x() - std::sin(body.angle) * from.y(),
+                      std::sin(body.angle) * from.x() + std::cos(body.angle) * from.y());
+    body.position = {0.0, -turned.y()};
+  }
+  return body;
+}
+
+// Up to two joints between the dynamic bodies (indices 1 …) or a body and the ground.
+void add_joints(Bytes& b, Scene& scene, int first_dynamic) {
+  const int dynamic = static_cast<int>(scene.bodies.size()) - first_dynamic;
+  const int count = b.integer(0, 2);
+  for (int j = 0; j < count; ++j) {
+    const int a = first_dynamic + b.integer(0, dynamic - 1);
+    const BodyDescription& body_a = scene.bodies[a];
+    JointDescription joint;
+    const int partner = b.one_in(2) ? 0 : first_dynamic + b.integer(0, dynamic - 1);
+    if (partner == a) continue;
+    const BodyDescription& body_b = scene.bodies[partner];
+    joint.bodies = {body_b.name, body_a.name};
+    switch (b.integer(0, 3)) {
+      case 0:
+        joint.type = JointType::revolute;
+        joint.anchor = body_a.position + Vec2(b.number(-0.3, 0.3), b.number(-0.3, 0.3));
+        break;
+      case 1:
+        joint.type = JointType::distance;
+        joint.anchors = {body_b.position + Vec2(0.0, b.number(0.5, 2.0)), body_a.position};
+        break;
+      case 2:
+        if (partner == 0) continue;  // an angle limit relative to the ground: needs two bodies
+        joint.type = JointType::angle_limit;
+        joint.lower = b.number(-3.0, 0.0);
+        joint.upper = *joint.lower + b.number(0.1, 3.0);
+        break;
+      default: {
+        joint.type = JointType::incline;
+        joint.body = body_a.name;
+        joint.point = body_a.position;
+        const double angle = b.number(0.0, 2.0 * M_PI);
+        joint.normal = {std::cos(angle), std::sin(angle)};
+        joint.one_sided = b.one_in(2);
+        break;
+      }
+    }
+    scene.joints.push_back(joint);
+  }
+}
+
+GeneratedScene general(Bytes& b) {
+  GeneratedScene g;
+  g.passive = b.one_in(2);
+  Scene& scene = g.scene;
+  choose_method(b, scene);
+  scene.bodies.push_back(ground());
+  if (b.one_in(3)) {
+    BodyDescription obstacle;
+    obstacle.name = "obstacle";
+    obstacle.shape = b.one_in(2) ? polygon(b) : any_shape(b);
+    obstacle.position = {b.number(-3.0, 3.0), b.number(0.2, 1.5)};
+    obstacle.angle = b.number(-M_PI, M_PI);
+    obstacle.is_static = true;
+    scene.bodies.push_back(obstacle);
+  }
+  const int first_dynamic = static_cast<int>(scene.bodies.size());
+  const int count = b.integer(1, 8);
+  for (int i = 0; i < count; ++i) {
+    BodyDescription body;
+    body.name = "b" + std::to_string(i);
+    body.shape = any_shape(b);
+    body.position = {b.number(-3.0, 3.0), b.number(0.3, 5.0)};
+    body.angle = b.number(-M_PI, M_PI);
+    body.density = b.number(0.3, 3.0);
+    body.friction = b.number(0.0, 1.0);
+    if (!g.passive) {
+      body.restitution = b.one_in(2) ? 0.0 : b.number(0.0, 1.0);
+      body.velocity = {b.number(-4.0, 4.0), b.number(-4.0, 4.0)};
+      body.angular_velocity = b.number(-5.0, 5.0);
+    }
+    scene.bodies.push_back(body);
+  }
+  if (!g.passive) add_joints(b, scene, first_dynamic);
+  g.steps = 240;
+  return g;
+}
+
+GeneratedScene resting(Bytes& b) {
+  GeneratedScene g;
+  g.kind = SceneKind::resting;
+  g.passive = true;
+  choose_method(b, g.scene);
+  g.scene.bodies = {ground(), resting_body(b)};
+  g.resting = "resting";
+  g.steps = 300;
+  return g;
+}
+
+// One body resting on the ground, sometimes a second one dropped a little onto it; stepped by
+// `pgs` (its velocity MLCP is the one compared with the exact solution).
+GeneratedScene island(Bytes& b) {
+  GeneratedScene g;
+  g.kind = SceneKind::island;
+  g.passive = true;
+  g.scene.solver = "pgs";
+  g.scene.step.iterations = b.integer(4, 30);
+  BodyDescription lower = resting_body(b);
+  g.scene.bodies = {ground(), lower};
+  if (b.one_in(2)) {
+    BodyDescription upper;
+    upper.name = "upper";
+    upper.shape.half_extents = {b.number(0.1, 0.5), b.number(0.1, 0.5)};
+    upper.position = {b.number(-0.3, 0.3), 2.0 + b.number(0.0, 1.0)};
+    upper.angle = b.number(-0.3, 0.3);
+    g.scene.bodies.push_back(upper);
+  }
+  g.steps = b.integer(1, 120);
+  return g;
+}
+
+}  // namespace
+
+GeneratedScene generate_scene(Bytes& bytes) {
+  switch (bytes.byte() % 3) {
+    case 1: return resting(bytes);
+    case 2: return island(bytes);
+    default: return general(bytes);
+  }
+}
+
+}  // namespace lamina::fuzz

@@ -1,0 +1,59 @@
+// Valid scenes from bytes, by a grammar: what the physics fuzzer (tests/fuzz/physics_fuzzer.cpp)
+// and its ctest (tests/test_physics_invariants.cpp) step. Every byte string makes a scene the
+// scene reader accepts (the generator keeps to scene_limits.h and writes only convex,
+// counter-clockwise polygons); the bytes choose which one. A string that runs out reads as
+// zeros, so short inputs make small scenes and libFuzzer's mutations change a scene a little.
+//
+// Three kinds, chosen by the first byte:
+//   general  up to 8 dynamic bodies of every shape (box, circle, polygon, capsule) above a
+//            ground, a static obstacle sometimes, up to 2 joints of every type, every solver,
+//            Δt and sweeps; "passive" (no restitution, no initial velocity, no joints) one time
+//            in two, for the energy invariant
+//   resting  one body placed resting on the ground on a flat side, at rest: it must stay
+//   island   one or two dynamic bodies touching the ground or each other, for comparing PGS's λ
+//            with the exact MLCP's
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace lamina::fuzz {
+
+// Reads the bytes in order; past the end every read is 0.
+class Bytes {
+ public:
+  Bytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
+
+  std::uint8_t byte();
+  // A whole number in [low, high].
+  int integer(int low, int high);
+  // A number in [low, high], in 65536 steps (two bytes).
+  double number(double low, double high);
+  // One time in `times` (the next byte ≡ 0 modulo `times`).
+  bool one_in(int times) { return byte() % times == 0; }
+
+ private:
+  const std::uint8_t* data_;
+  std::size_t size_;
+  std::size_t next_ = 0;
+};
+
+enum class SceneKind { general, resting, island };
+
+struct GeneratedScene {
+  Scene scene;
+  SceneKind kind = SceneKind::general;
+  bool passive = false;   // no restitution, no initial velocity, no joints
+  int steps = 0;          // how many steps to take
+  std::string resting;    // kind resting: the name of the body placed at rest
+};
+
+// The scene the bytes describe.
+GeneratedScene generate_scene(Bytes& bytes);
+
+const char* kind_name(SceneKind kind);
+
+}  // namespace lamina::fuzz
