@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
+#include <utility>
 #include <vector>
 
 #include "motion/integrator.h"
@@ -151,24 +151,28 @@ class SoftStep final : public StepMethod {
       const std::array<int, 2> jb = problem.joints[j]->bodies();
       mark(joint_colours_[j], jb[0], jb[1]);
     }
-    std::map<BodyPair, int> kept;
+    // problem.pairs and the colours kept from the last step are both in pair order: one walk
+    // finds each pair's colour of before, or none (a pair that just started touching)
+    constexpr int uncoloured = -1;  // no colour yet (colours are 0 … graph_colours − 1, or the overflow)
+    next_colours_.clear();
+    std::size_t before = 0;
     for (const ContactPair& pair : problem.pairs) {
-      const auto found = pair_colours_.find(pair.bodies);
-      if (found == pair_colours_.end()) continue;
-      kept.emplace(pair.bodies, found->second);
-      mark(found->second, pair.bodies.first, pair.bodies.second);
+      while (before < pair_colours_.size() && pair_colours_[before].first < pair.bodies) ++before;
+      const bool kept = before < pair_colours_.size() && pair_colours_[before].first == pair.bodies;
+      next_colours_.emplace_back(pair.bodies, kept ? pair_colours_[before].second : uncoloured);
+      if (kept) mark(pair_colours_[before].second, pair.bodies.first, pair.bodies.second);
     }
-    pair_colours_.swap(kept);
+    pair_colours_.swap(next_colours_);
     // what is new takes one: the joints (v3 colours a joint when it is made, before any contact
     // of the first step), then the pairs that started touching, in the World's pair order
     for (std::size_t j = joint_colours_.size(); j < problem.joints.size(); ++j) {
       const std::array<int, 2> jb = problem.joints[j]->bodies();
       joint_colours_.push_back(take(jb[0], jb[1], 0));
     }
-    for (const ContactPair& pair : problem.pairs) {
-      if (pair_colours_.count(pair.bodies) != 0) continue;
-      const bool against_static = !moving(pair.bodies.first) || !moving(pair.bodies.second);
-      pair_colours_.emplace(pair.bodies, take(pair.bodies.first, pair.bodies.second, against_static ? 1 : 0));
+    for (auto& [bodies_of_pair, colour] : pair_colours_) {
+      if (colour != uncoloured) continue;
+      const bool against_static = !moving(bodies_of_pair.first) || !moving(bodies_of_pair.second);
+      colour = take(bodies_of_pair.first, bodies_of_pair.second, against_static ? 1 : 0);
     }
   }
 
@@ -183,7 +187,8 @@ class SoftStep final : public StepMethod {
     rows_.assign(static_cast<std::size_t>(count), SoftRow());
     // each row's place in the sweep: 2 c for the joints of colour c (the overflow as −1), 2 c + 1
     // for its pairs
-    std::vector<int> place(static_cast<std::size_t>(count), 0);
+    std::vector<int>& place = place_;
+    place.assign(static_cast<std::size_t>(count), 0);
     const auto rank = [](int c) { return c == overflow ? -1 : c; };
     for (std::size_t j = 0; j < problem.joints.size(); ++j) {
       const RowRange& range = problem.joint_rows[j];
@@ -191,17 +196,25 @@ class SoftStep final : public StepMethod {
         place[static_cast<std::size_t>(i)] = 2 * rank(joint_colours_[j]);
       }
     }
-    for (const ContactPair& pair : problem.pairs) {
-      const int c = pair_colours_.at(pair.bodies);
+    for (std::size_t k = 0; k < problem.pairs.size(); ++k) {
+      const ContactPair& pair = problem.pairs[k];
+      const int c = pair_colours_[k].second;  // colour() kept them in pair order
       for (int i = pair.rows.first; i < pair.rows.first + pair.rows.count; ++i) {
         place[static_cast<std::size_t>(i)] = 2 * rank(c) + 1;
       }
     }
+    // the rows in order of place, rows of one place in the MLCP's order: a counting sort over the
+    // places −2 … 2 graph_colours − 1 (stable, and in buffers kept from step to step)
+    const auto bucket = [](int p) { return static_cast<std::size_t>(p + 2); };
+    starts_.assign(2 * graph_colours + 3, 0);
+    for (int p : place) ++starts_[bucket(p) + 1];
+    for (std::size_t k = 1; k < starts_.size(); ++k) starts_[k] += starts_[k - 1];
     order_.resize(static_cast<std::size_t>(count));
-    for (int i = 0; i < count; ++i) order_[static_cast<std::size_t>(i)] = static_cast<std::size_t>(i);
-    std::stable_sort(order_.begin(), order_.end(),
-                     [&place](std::size_t a, std::size_t b) { return place[a] < place[b]; });
-    std::vector<int> position(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+      order_[starts_[bucket(place[static_cast<std::size_t>(i)])]++] = static_cast<std::size_t>(i);
+    }
+    std::vector<int>& position = position_;
+    position.resize(static_cast<std::size_t>(count));
     for (std::size_t k = 0; k < order_.size(); ++k) position[order_[k]] = static_cast<int>(k);
     // The joints' separations at t: their rows written with β = 1 ask ζ = −C/Δt of both kinds
     // (eq. 3-14, 3-17..3-19), so C = −ζ Δt.
@@ -235,8 +248,9 @@ class SoftStep final : public StepMethod {
     // v3's coloured contacts cap the push-out at 3 m/s over the static softness's s_m, which the
     // s_m of the solve takes back to 3 m/s against the ground; its overflow contacts at 3 m/s
     const double coloured_push = push_out_speed / against_static.mass_scale;
-    for (const ContactPair& pair : problem.pairs) {
-      const bool overflowed = pair_colours_.at(pair.bodies) == overflow;
+    for (std::size_t p = 0; p < problem.pairs.size(); ++p) {
+      const ContactPair& pair = problem.pairs[p];
+      const bool overflowed = pair_colours_[p].second == overflow;
       for (int k = 0; k < pair.count; ++k) {
         const Contact& c = pair.contacts[k];
         SoftRow& r = rows_[static_cast<std::size_t>(position[static_cast<std::size_t>(c.row)])];
@@ -326,7 +340,12 @@ class SoftStep final : public StepMethod {
   std::vector<Vec2> turned_;           // cos Δθ, sin Δθ of each body since t
   std::array<std::vector<char>, graph_colours> used_;  // colour c moves body b: used_[c][b]
   std::vector<int> joint_colours_;     // each joint's colour (or the overflow), in joint order
-  std::map<BodyPair, int> pair_colours_;  // each touching pair's colour (or the overflow)
+  // each touching pair's colour (or the overflow), in the pairs' order, and the next step's,
+  // kept to reuse their memory
+  std::vector<std::pair<BodyPair, int>> pair_colours_, next_colours_;
+  std::vector<int> place_;             // each row's place in the sweep order (prepare)
+  std::vector<std::size_t> starts_;    // where each place's rows start in order_ (prepare)
+  std::vector<int> position_;          // each MLCP row's index in rows_ (prepare)
 };
 
 }  // namespace
