@@ -126,24 +126,29 @@ std::string described(const Move& m, const char* when) {
          std::to_string(m.turn) + " rad";
 }
 
-// The resting body: over the whole run it settles within the bounds of its solver, and over the
-// second half it creeps no more than creep_distance / 10 and creep_angle / 10.
+// The resting body: over the whole run it settles — sideways and up at most creep_distance or,
+// rocking on its face without tipping, half the face; down at most the slop and creep_distance;
+// turned at most creep_angle or the angle it would tip at, atan(face/2 ÷ height) — and over the
+// second half it moves a tenth of that at most: it settles, it does not creep. The text's
+// method and soft-step take a flat face's first contact at a corner and tip onto it first: for
+// them corner_first_distance and corner_first_angle.
 std::optional<std::string> settled(const RigidBody& start, const RigidBody& halfway,
                                    const RigidBody& end, const World& world,
                                    const GeneratedScene& generated) {
-  // the text's method and soft-step take a flat face's first contact at a corner
   const bool corner_first = generated.scene.solver == "text" || generated.scene.solver == "soft-step";
-  const double distance = corner_first ? corner_first_distance : creep_distance;
-  const double angle = corner_first ? corner_first_angle : creep_angle;
+  const double half_face = 0.5 * generated.face.length;
+  const double rock_angle = std::atan2(half_face, generated.face.height);
+  const double distance = corner_first ? corner_first_distance : std::max(creep_distance, half_face);
+  const double angle = corner_first ? corner_first_angle : std::max(creep_angle, rock_angle);
   const double slop = world.settings().contact.slop;
   const Move whole = move_between(start, end);
-  if (whole.sideways > distance || whole.up > distance || whole.down > slop + distance ||
+  if (whole.sideways > distance || whole.up > creep_distance || whole.down > slop + creep_distance ||
       whole.turn > angle) {
     return described(whole, "over the run");
   }
   const Move late = move_between(halfway, end);
-  if (late.sideways > creep_distance / 10 || late.up > creep_distance / 10 ||
-      late.down > creep_distance / 10 || late.turn > creep_angle / 10) {
+  if (late.sideways > distance / 10 || late.up > creep_distance / 10 ||
+      late.down > creep_distance / 10 || late.turn > angle / 10) {
     return described(late, "over the second half of the run (creeping)");
   }
   return std::nullopt;

@@ -9,14 +9,16 @@
 //               round-off (1e-9 relative, 1e-9 N)
 //   energy      passive scenes (no restitution, no initial velocity, no joints): E(t) − E(0)
 //               at most what undoing penetration may add (below)
-//   resting     a body placed at rest on the ground settles: over its run it moves sideways
-//               and up at most creep_distance, sinks at most the slop (what split impulse
-//               leaves) and creep_distance more, and turns at most creep_angle — the text's own
-//               method and soft-step at most corner_first_distance and corner_first_angle: they
-//               take a flat face's first contact at one corner (the text's literal deepest
-//               point, Fig 4-2; soft-step like Box2D v3's clipping, TieRule::midpoint_first), so
-//               the body tips onto it before the cache holds the other — and over the second
-//               half of its run it creeps at most a tenth of creep_distance and creep_angle
+//   resting     a body placed at rest on the ground settles: over its run it moves up at most
+//               creep_distance, sinks at most the slop (what split impulse leaves) and
+//               creep_distance more, moves sideways at most creep_distance or half its face
+//               and turns at most creep_angle or its tipping angle atan(face/2 ÷ height) (it
+//               may rock on its face, not leave it) — the text's method and soft-step at most
+//               corner_first_distance and corner_first_angle: they take a flat face's first
+//               contact at one corner (the text's literal deepest point, Fig 4-2; soft-step like
+//               Box2D v3's clipping, TieRule::midpoint_first) and tip onto it before the cache
+//               holds the other — and over the second half of its run it moves at most a
+//               tenth of that (it settles; it does not creep)
 //   exact       on an island's velocity MLCP with independent rows (J B of full rank), PGS run to
 //               convergence and the exact solution (Lemke) agree on λ
 //

@@ -107,7 +107,9 @@ void choose_method(Bytes& b, Scene& scene) {
 // a circle, a capsule lying down, a polygon on the edge nearest its centroid (the foot of the
 // centroid on that edge's line lies inside it, so the polygon stands; one whose foot lies within
 // a tenth of the edge of a corner becomes a box, which stands with room).
-BodyDescription resting_body(Bytes& b) {
+BodyDescription resting_body(Bytes& b, RestingFace* face = nullptr) {
+  RestingFace unused;
+  RestingFace& on = face ? *face : unused;
   BodyDescription body;
   body.name = "resting";
   body.shape = any_shape(b);
@@ -116,8 +118,10 @@ BodyDescription resting_body(Bytes& b) {
   const ShapeDescription& s = body.shape;
   if (s.type == ShapeType::box) {
     body.position = {0.0, s.half_extents.y()};
+    on = {2.0 * s.half_extents.x(), s.half_extents.y()};
   } else if (s.type != ShapeType::polygon) {
     body.position = {0.0, s.radius};
+    on = {s.type == ShapeType::capsule ? s.length : 0.0, s.radius};
   } else {
     const AreaMoments m = polygon_moments(s.vertices);
     const int n = static_cast<int>(s.vertices.size());
@@ -137,8 +141,10 @@ BodyDescription resting_body(Bytes& b) {
       body.shape = ShapeDescription{};
       body.shape.half_extents = {0.4, 0.3};
       body.position = {0.0, 0.3};
+      on = {0.8, 0.3};
       return body;
     }
+    on = {(to - from).norm(), nearest_distance};
     // Turn the edge to point along +x (counter-clockwise, so the body lies above it), then lift
     // the vertices' origin so that the edge lies on y = 0.
     const Vec2 e = to - from;
@@ -233,7 +239,7 @@ GeneratedScene resting(Bytes& b) {
   g.kind = SceneKind::resting;
   g.passive = true;
   choose_method(b, g.scene);
-  g.scene.bodies = {ground(), resting_body(b)};
+  g.scene.bodies = {ground(), resting_body(b, &g.face)};
   g.resting = "resting";
   g.steps = 300;
   return g;

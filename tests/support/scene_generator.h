@@ -43,12 +43,19 @@ class Bytes {
 
 enum class SceneKind { general, resting, island };
 
+// The flat side a resting body stands on.
+struct RestingFace {
+  double length = 0.0;  // along the ground, in m (0: a circle)
+  double height = 0.0;  // of the centre of mass above it, in m
+};
+
 struct GeneratedScene {
   Scene scene;
   SceneKind kind = SceneKind::general;
   bool passive = false;   // no restitution, no initial velocity, no joints
   int steps = 0;          // how many steps to take
   std::string resting;    // kind resting: the name of the body placed at rest
+  RestingFace face;       // kind resting: the side it stands on
 };
 
 // The scene the bytes describe.
