@@ -1,5 +1,7 @@
 #include "app/harness/options.h"
 
+#include <iostream>
+
 #include <CLI/CLI.hpp>
 
 namespace lamina::tutorial {
@@ -52,7 +54,10 @@ ParsedOptions parse_options(int argc, char** argv, const TutorialInfo& info) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return {std::nullopt, app.exit(e)};
+    // --help prints the help, exit 0; a bad option or value is one line and exit 2, as `lamina`
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return {std::nullopt, app.exit(e)};
+    std::cerr << info.name << ": " << e.what() << '\n';
+    return {std::nullopt, 2};
   }
   if (*frames_option) o.frames = frames;
   if (*every_option) o.every = every;
