@@ -5,11 +5,15 @@
 // contact and friction λ within their bounds, a passive scene's energy within what undoing
 // penetration may add, a resting body staying put, PGS agreeing with the exact MLCP on small
 // islands. A broken invariant prints the scene (JSON) and the invariant and aborts, so libFuzzer
-// keeps and can minimise the input (run_fuzzer.sh; docs/reliability.md).
+// keeps and can minimise the input (run_fuzzer.sh; docs/reliability.md). What it finds is kept
+// as a scene in tests/data/fuzz/physics_regressions/ (an input beginning with '{').
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
+#include <optional>
+#include <string>
 
 #include "scene/scene_json.h"
 #include "support/physics_invariants.h"
@@ -31,11 +35,27 @@ struct Totals {
 
 Totals totals;
 
+// An input that begins with '{' is a regression file (a scene the fuzzer found, kept as a
+// scene: scene_generator.h); a mutation that makes one that does not read is passed over.
+std::optional<lamina::fuzz::GeneratedScene> scene_of(const std::uint8_t* data, std::size_t size) {
+  if (size > 0 && data[0] == '{') {
+    try {
+      return lamina::fuzz::regression_scene(std::string(reinterpret_cast<const char*>(data), size),
+                                            "regression");
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  }
+  lamina::fuzz::Bytes bytes(data, size);
+  return lamina::fuzz::generate_scene(bytes);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  lamina::fuzz::Bytes bytes(data, size);
-  const lamina::fuzz::GeneratedScene generated = lamina::fuzz::generate_scene(bytes);
+  const std::optional<lamina::fuzz::GeneratedScene> scene = scene_of(data, size);
+  if (!scene) return 0;
+  const lamina::fuzz::GeneratedScene& generated = *scene;
   const lamina::fuzz::InvariantReport report = lamina::fuzz::check_invariants(generated);
   ++totals.scenes;
   totals.steps += report.steps;

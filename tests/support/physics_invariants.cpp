@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <optional>
@@ -19,14 +20,21 @@ namespace lamina::fuzz {
 namespace {
 
 // Round-off in the bounds: PGS clamps λ_t to ±μ λ_n exactly, the exact and block solvers to the
-// rounding of their pivots and 2 × 2 solves.
+// rounding of their pivots and 2 × 2 solves, relative to the step's largest force.
 constexpr double bound_relative = 1e-9;
-constexpr double bound_absolute = 1e-9;  // in N
+constexpr double bound_absolute = 1e-12;  // in N
 // PGS is run to ‖W‖ ≤ this (relative to ‖η‖) before its λ is compared with the exact one, and
 // the two must then agree to exact_tolerance relative to max(1, |λ_exact|∞).
 constexpr double pgs_converged = 1e-12;
 constexpr int pgs_sweeps = 20000;
 constexpr double exact_tolerance = 1e-6;
+
+// A number for a message, to 6 significant digits (forces span 1e-6 to 1e12 N).
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
 
 std::string at_step(long step, const std::string& what) {
   return "step " + std::to_string(step) + ": " + what;
@@ -49,15 +57,29 @@ double pair_friction(const Scene& scene, const BodyPair& pair) {
   return std::sqrt(scene.bodies[pair.first].friction * scene.bodies[pair.second].friction);
 }
 
-std::optional<std::string> out_of_bounds(const Scene& scene, const World& world, long& checked) {
-  for (const ContactInfo& c : world.contacts()) {
+std::optional<std::string> out_of_bounds(const Scene& scene, const World& world,
+                                         const WorldReport& step, long& checked) {
+  const std::vector<ContactInfo> contacts = world.contacts();
+  // The step's force scale: its largest λ, or the largest force that would stop a row alone,
+  // |η_i| / d_i (eq. 3-24's Gauss-Seidel step from λ = 0). The exact solvers round relative to
+  // it, and a scene's forces span from 1e-12 N to 1e12 N within the reader's ranges.
+  double largest = 0.0;
+  for (const ContactInfo& c : contacts) {
+    largest = std::max({largest, std::abs(c.lambda_normal), std::abs(c.lambda_tangent)});
+  }
+  const Mlcp& mlcp = step.velocity.mlcp;
+  for (int i = 0; i < mlcp.row_count(); ++i) {
+    if (mlcp.d(i) > 0.0) largest = std::max(largest, std::abs(mlcp.eta(i)) / mlcp.d(i));
+  }
+  const double tolerance = bound_relative * largest + bound_absolute;
+  for (const ContactInfo& c : contacts) {
     ++checked;
     const double mu = pair_friction(scene, c.bodies);
     const double n = c.lambda_normal, t = c.lambda_tangent;
-    if (n < -bound_absolute) return "contact λ_n = " + std::to_string(n) + " N < 0";
-    if (std::abs(t) > mu * n * (1.0 + bound_relative) + bound_absolute) {
-      return "friction |λ_t| = " + std::to_string(std::abs(t)) + " N > μ λ_n = " +
-             std::to_string(mu * n) + " N";
+    if (n < -tolerance) return "contact λ_n = " + number(n) + " N < 0";
+    if (std::abs(t) > mu * n + tolerance) {
+      return "friction |λ_t| = " + number(std::abs(t)) + " N > μ λ_n = " + number(mu * n) +
+             " N (μ = " + number(mu) + ", the step's largest force " + number(largest) + " N)";
     }
   }
   return std::nullopt;
@@ -201,8 +223,9 @@ InvariantReport check_invariants(const GeneratedScene& generated) {
                                 : std::optional<RigidBody>(world.bodies()[index_of.at(generated.resting)]);
 
   std::optional<RigidBody> halfway;  // the resting body halfway through the run
+  WorldReport step_report;  // what the step solved: the bounds' scale reads its MLCP
   for (long step = 0; step < generated.steps; ++step) {
-    world.step();
+    world.step(step_report);
     report.steps = step + 1;
     if (rest && step + 1 == generated.steps / 2) {
       halfway = world.bodies()[index_of.at(generated.resting)];
@@ -216,7 +239,7 @@ InvariantReport check_invariants(const GeneratedScene& generated) {
       return report;
     }
     if (bounds_apply) {
-      if (std::optional<std::string> bad = out_of_bounds(scene, world, report.bound_checks)) {
+      if (std::optional<std::string> bad = out_of_bounds(scene, world, step_report, report.bound_checks)) {
         report.violation = at_step(step, "bounds: " + *bad);
         return report;
       }
