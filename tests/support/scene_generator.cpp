@@ -29,7 +29,8 @@ double Bytes::number(double low, double high) {
 }
 
 double Bytes::log_number(double low, double high) {
-  return std::exp(number(std::log(low), std::log(high)));
+  // exp(log(x)) may round just past an end (1e-5 becomes 9.999999999999997e-06)
+  return std::clamp(std::exp(number(std::log(low), std::log(high))), low, high);
 }
 
 const char* kind_name(SceneKind kind) {
