@@ -7,7 +7,8 @@
 //   bounds      for the solvers whose MLCP has them (all but soft-step): each contact's
 //               λ_n ≥ 0 and its friction |λ_t| ≤ μ λ_n, μ = √(μ1 μ2) from the scene, to
 //               round-off (1e-9 of the step's force scale — its largest λ, or the largest
-//               |η_i|/d_i, the force that would stop a row alone — + 1e-12 N)
+//               |η_i|/d_i, the force that would stop a row alone — + 1e-9 N, below which
+//               Lemke's checked answer is round-off)
 //   energy      passive scenes (no restitution, no initial velocity, no joints): E(t) − E(0)
 //               at most what undoing penetration may add (below)
 //   resting     a body placed at rest on the ground settles: over its run it moves up at most
