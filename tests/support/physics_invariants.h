@@ -8,7 +8,8 @@
 //               λ_n ≥ 0 and its friction |λ_t| ≤ μ λ_n, μ = √(μ1 μ2) from the scene, to
 //               round-off (1e-9 of the step's force scale — its largest λ, or the largest
 //               |η_i|/d_i, the force that would stop a row alone — + 1e-9 N, below which
-//               Lemke's checked answer is round-off)
+//               Lemke's checked answer is round-off; 1e-6 of it for exact and islands, whose
+//               pivots lose digits on the wide kind's ill-conditioned MLCPs)
 //   energy      passive scenes (no restitution, no initial velocity, no joints): E(t) − E(0)
 //               at most what undoing penetration may add (below)
 //   resting     a body placed at rest on the ground settles: over its run it moves up at most
@@ -29,11 +30,12 @@
 // ½ m g² Δt² per step in free fall. Energy enters only where penetration is undone: split impulse
 // moves the bodies apart, Baumgarte's and the soft step's bias give them the velocity to do so.
 // Undoing a penetration d beyond the slop lifts the bodies above that contact by at most d (a
-// body rests on a chain of contacts, so by at most the sum over the contacts, D); and
-// Baumgarte's bias (the text's method) gives the bodies a velocity of at most β D/Δt to do it,
-// whose kinetic energy ½ M (β D/Δt)² can lift them further (past d once (β d/Δt)²/2g > d, deep
-// overlaps). So a step adds at most
-//   ΔE_k ≤ |g| M D + ½ M (β D/Δt)² (Baumgarte only),  D = Σ_c max(0, d_c − slop)
+// body rests on a chain of contacts, so by at most the sum over the contacts, D); and a bias
+// gives the bodies a velocity to do it — Baumgarte's (the text's method) at most β D/Δt,
+// soft-step's at most D/h for its substep h (Box2D v3's bias rate ω/(2ζ + hω) < 1/h) — whose
+// kinetic energy ½ M v² can lift them further (past d once v²/2g > d, deep overlaps); split
+// impulse moves positions only. So a step adds at most
+//   ΔE_k ≤ |g| M D + ½ M (r D)²,  D = Σ_c max(0, d_c − slop),  r = β/Δt, 1/h or 0
 // (M the moving bodies' mass), and E(t) − E(0) ≤ Σ_{k<t} ΔE_k.
 // The warm start replays last step's λ, about one step's worth of the weight's impulse M g Δt;
 // where the points changed (a flat landing gains its second corner, a point moves to the
