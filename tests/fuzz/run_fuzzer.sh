@@ -10,7 +10,9 @@
 # or an input slower than -timeout; the input is saved as <work>/crashes/<kind>-<sha1>.
 #
 # LAMINA_FUZZ_DICT names a dictionary (-dict) and LAMINA_FUZZ_FLAGS adds libFuzzer flags, each
-# fuzzer's own (tests/fuzz/CMakeLists.txt).
+# fuzzer's own (tests/fuzz/CMakeLists.txt); LAMINA_FUZZ_NO_REGRESSION_SEEDS (set to any word)
+# runs the regressions first only, not as seeds of the fuzzing (the physics fuzzer's are scene
+# files, whose mutations would all read as one kind of the grammar).
 # Bounds of one execution: -max_len=8192 bytes of scene file (longer seeds are cut to that),
 # -timeout=10 s, -rss_limit_mb=2048; scene_fuzzer.cpp also steps only scenes of at most 64
 # bodies and 1000 iterations.
@@ -36,9 +38,10 @@ if [ "$status" -ne 0 ]; then
   exit "$status"
 fi
 
+[ -n "${LAMINA_FUZZ_NO_REGRESSION_SEEDS:-}" ] || set -- "$regressions" "$@"
 "$fuzzer" -max_total_time="$seconds" -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
   ${LAMINA_FUZZ_DICT:+-dict="$LAMINA_FUZZ_DICT"} ${LAMINA_FUZZ_FLAGS:-} -print_final_stats=1 -artifact_prefix="$work/crashes/" \
-  "$work/corpus" "$work/seeds" "$regressions" "$@" || status=$?
+  "$work/corpus" "$work/seeds" "$@" || status=$?
 if [ "$status" -ne 0 ]; then
   echo "run_fuzzer.sh: $(basename "$fuzzer") failed (exit $status); the input is in $work/crashes/." >&2
   echo "Reproduce: $fuzzer <input>; shrink: $fuzzer -minimize_crash=1 -runs=100000 <input>;" \

@@ -172,7 +172,9 @@ std::optional<std::string> settled(const RigidBody& start, const RigidBody& half
   const double angle = corner_first ? corner_first_angle : std::max(creep_angle, rock_angle);
   const double slop = world.settings().contact.slop;
   const Move whole = move_between(start, end);
-  if (whole.sideways > distance || whole.up > creep_distance || whole.down > slop + creep_distance ||
+  // tipping onto a corner lifts the centre too (by about half the face times the turn)
+  const double up = corner_first ? corner_first_distance : creep_distance;
+  if (whole.sideways > distance || whole.up > up || whole.down > slop + creep_distance ||
       whole.turn > angle) {
     return described(whole, "over the run");
   }

@@ -17,11 +17,11 @@
 //               creep_distance more, moves sideways at most creep_distance or half its face
 //               and turns at most creep_angle or its tipping angle atan(face/2 ÷ height) (it
 //               may rock on its face, not leave it) — the text's method and soft-step at most
-//               corner_first_distance and corner_first_angle: they take a flat face's first
-//               contact at one corner (the text's literal deepest point, Fig 4-2; soft-step like
-//               Box2D v3's clipping, TieRule::midpoint_first) and tip onto it before the cache
-//               holds the other — and over the second half of its run it moves at most a
-//               tenth of that (it settles; it does not creep)
+//               corner_first_distance (sideways and up) and corner_first_angle: they take a flat
+//               face's first contact at one corner (the text's literal deepest point, Fig 4-2;
+//               soft-step like Box2D v3's clipping, TieRule::midpoint_first) and tip onto it
+//               before the cache holds the other — and over the second half of its run it
+//               moves at most a tenth of that (it settles; it does not creep)
 //   exact       on an island's velocity MLCP with independent rows (J B of full rank), PGS run to
 //               convergence and the exact solution (Lemke) agree on λ
 //
