@@ -5,42 +5,15 @@
 #include <cstdlib>
 #include <map>
 
+#include "scene/builtin_parts.h"
+#include "scene/convex_scenes.h"
 #include "scene/scene_json.h"
 #include "scene/shortest_number.h"
 
 namespace lamina {
 namespace {
 
-constexpr double half = 0.5;  // half extent of the unit box, in m
-constexpr int pyramid_rows = 20;  // the boxes in the base of "pyramid"
-
-// The ground of every box-on-ground scene: a static box (20, 0.5) whose top is at y = 0.
-BodyDescription ground(double half_width = 20.0) {
-  BodyDescription g;
-  g.name = "ground";
-  g.shape.half_extents = {half_width, 0.5};
-  g.position = {0.0, -0.5};
-  g.is_static = true;
-  return g;
-}
-
-BodyDescription box(const std::string& name, Vec2 position, Vec2 half_extents = {half, half},
-                    double angle = 0.0) {
-  BodyDescription b;
-  b.name = name;
-  b.shape.half_extents = half_extents;
-  b.position = position;
-  b.angle = angle;
-  return b;
-}
-
-// A scene of these bodies and joints; builtin_scene gives it its name and description.
-Scene with(std::vector<BodyDescription> bodies, std::vector<JointDescription> joints = {}) {
-  Scene s;
-  s.bodies = std::move(bodies);
-  s.joints = std::move(joints);
-  return s;
-}
+using namespace builtin;
 
 JointDescription revolute(const std::string& a, const std::string& b, Vec2 anchor) {
   JointDescription j;
@@ -49,6 +22,8 @@ JointDescription revolute(const std::string& a, const std::string& b, Vec2 ancho
   j.anchor = anchor;
   return j;
 }
+
+constexpr int pyramid_rows = 20;  // the boxes in the base of "pyramid"
 
 Scene box_on_ground(double y, double angle) {
   return with({ground(), box("box", {0.0, y}, {half, half}, angle)});
@@ -219,88 +194,6 @@ Scene see_saw() {
   BodyDescription weight = box("weight", {-2.5, 3.0});
   return with({ground(), base, plank, box("counterweight", {2.5, 1.7}, {0.25, 0.25}), weight},
               {revolute("base", "plank", {0.0, 1.1})});
-}
-
-// A regular hexagon of circumradius r with a flat bottom and top (vertices at 0°, 60°, …),
-// about its centre.
-ShapeDescription hexagon(double r) {
-  ShapeDescription shape;
-  shape.type = ShapeType::polygon;
-  for (int k = 0; k < 6; ++k) shape.vertices.push_back(r * Vec2(std::cos(k * M_PI / 3), std::sin(k * M_PI / 3)));
-  return shape;
-}
-
-// A static wedge of slope θ = 35° (a right triangle 6 m long, 6 tan θ high) on the ground, and a
-// hexagon lying on its slope near the top with a face on it: on a slope steeper than 30° a
-// hexagon tips over its lower corner (its centre passes that corner), so it tumbles down.
-Scene wedge_ramp() {
-  const double theta = 35.0 * M_PI / 180.0, run = 6.0, r = 0.4;
-  BodyDescription wedge;
-  wedge.name = "wedge";
-  wedge.shape.type = ShapeType::polygon;
-  wedge.shape.vertices = {{0.0, 0.0}, {run, 0.0}, {0.0, run * std::tan(theta)}};
-  wedge.position = {-3.0, 0.0};  // the vertices' origin: the wedge's lower-left corner
-  wedge.is_static = true;
-  BodyDescription hex;
-  hex.name = "hexagon";
-  hex.shape = hexagon(r);
-  // A face on the slope: turned by −θ, its centre the apothem above the slope's point 1.2 m
-  // (along the slope) from the top.
-  hex.angle = -theta;
-  const Vec2 down_slope(std::cos(theta), -std::sin(theta)), normal(std::sin(theta), std::cos(theta));
-  const Vec2 top = wedge.position + wedge.shape.vertices[2];
-  hex.position = top + 1.2 * down_slope + r * std::sqrt(3.0) / 2.0 * normal;
-  return with({ground(), wedge, hex});
-}
-
-// Thirty capsules (ρ = 0.15 m, l = 0.9 m) dropped in six layers between two walls, each layer
-// turned a little from the one below, onto the ground.
-Scene capsule_pile() {
-  std::vector<BodyDescription> bodies = {ground()};
-  for (const double x : {-3.2, 3.2}) {
-    BodyDescription wall = box(x < 0 ? "left wall" : "right wall", {x, 2.5}, {0.2, 2.5});
-    wall.is_static = true;
-    bodies.push_back(wall);
-  }
-  for (int layer = 0; layer < 6; ++layer) {
-    for (int i = 0; i < 5; ++i) {
-      BodyDescription c;
-      c.name = "c" + std::to_string(layer) + "_" + std::to_string(i);
-      c.shape.type = ShapeType::capsule;
-      c.shape.radius = 0.15;
-      c.shape.length = 0.9;
-      c.position = {-2.4 + 1.2 * i + (layer % 2 == 0 ? 0.0 : 0.3), 0.5 + 0.55 * layer};
-      c.angle = (layer % 2 == 0 ? 0.25 : -0.25) + 0.1 * (i - 2);
-      bodies.push_back(c);
-    }
-  }
-  return with(bodies);
-}
-
-// A pyramid of regular hexagons (circumradius 0.5 m, flat bottom) packed as a honeycomb: the
-// base's hexagons stand 1.5 m apart on the ground, and each row above fills the gaps of the row
-// below, face against face, so row k has rows − k hexagons and its centres lie k apothems higher.
-Scene hexagon_pyramid(double n) {
-  const int rows = static_cast<int>(n);
-  const double r = 0.5, apothem = r * std::sqrt(3.0) / 2.0;
-  std::vector<BodyDescription> bodies = {ground(std::max(20.0, rows * 1.5 * r + 5.0))};
-  for (int row = 0; row < rows; ++row) {
-    const int count = rows - row;
-    for (int i = 0; i < count; ++i) {
-      BodyDescription h;
-      h.name = "r" + std::to_string(row) + "h" + std::to_string(i);
-      h.shape = hexagon(r);
-      h.position = {(i - 0.5 * (count - 1)) * 3.0 * r, apothem * (row + 1)};
-      bodies.push_back(h);
-    }
-  }
-  return with(bodies);
-}
-
-std::string hexagon_pyramid_description(double n) {
-  const int rows = static_cast<int>(n);
-  return "a honeycomb pyramid of " + std::to_string(rows * (rows + 1) / 2) + " hexagons, " +
-         std::to_string(rows) + " in its base";
 }
 
 // What a pyramid of `rows` rows is, written once for the list and for every pyramid:N.
