@@ -86,14 +86,19 @@ class Tableau {
 };
 
 // Whether z solves the LCP to round-off: z ≥ 0, w = M z + q ≥ 0 and min(z_i, w_i) = 0, each
-// to 1e-9 of the problem's scale max(1, |q|∞, |M|∞ |z|∞).
+// to 1e-9 of its own scale: z's is max(1, |z|∞); w_i's is its row's, max(1, |q_i|, Σ_j |M_ij z_j|),
+// what rounding in M z + q is relative to. One scale for every row would mix units: the exact
+// MLCP's rows are velocities (J B λ − η) and its friction rows forces (μ λ_n − λ_t), and a body a
+// million times lighter than another makes the first 1e12 times the second (found by the physics
+// fuzzer: a friction row 0.04 N past μ λ_n = 0 passed a shared scale of 2e12).
 bool solves(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, const Eigen::VectorXd& z) {
   const Eigen::VectorXd w = M * z + q;
-  const double scale = std::max({1.0, q.cwiseAbs().maxCoeff(),
-                                 M.cwiseAbs().maxCoeff() * z.cwiseAbs().maxCoeff()});
-  const double tolerance = 1e-9 * scale;
+  const double z_scale = std::max(1.0, z.cwiseAbs().maxCoeff());
+  const Eigen::VectorXd terms = M.cwiseAbs() * z.cwiseAbs();  // Σ_j |M_ij z_j| per row
   for (int i = 0; i < z.size(); ++i) {
-    if (z[i] < -tolerance || w[i] < -tolerance || std::min(z[i], w[i]) > tolerance) return false;
+    const double w_scale = std::max({1.0, std::abs(q[i]), terms[i]});
+    if (z[i] < -1e-9 * z_scale || w[i] < -1e-9 * w_scale) return false;
+    if (std::min(z[i] / z_scale, w[i] / w_scale) > 1e-9) return false;  // complementary
   }
   return true;
 }

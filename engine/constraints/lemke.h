@@ -25,7 +25,7 @@ enum class LemkeStatus {
   ray,            // a ray termination: no solution was found (none exists for M PSD)
   out_of_pivots,  // max_pivots pivots without an end
   inaccurate      // z0 left, but the pivots' rounding left z or w = M z + q below zero, or
-                  // z and w both positive in a row, beyond 1e-9 of the problem's scale: the z
+                  // z and w both positive in a row, beyond 1e-9 of that row's scale: the z
                   // found is no solution and is not returned (found by the physics fuzzer: a
                   // stack of frictionless overlapping boxes, λ = −0.06 N among forces of 0.7 N)
 };

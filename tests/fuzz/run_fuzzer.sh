@@ -9,6 +9,11 @@
 # the seed folders given (the bad-scene catalogue). Exits non-zero on a crash, a sanitizer report, a leak
 # or an input slower than -timeout; the input is saved as <work>/crashes/<kind>-<sha1>.
 #
+# <seconds> 0 runs no mutation: each seed (the writer's, then the seed folders') is run once, the
+# same inputs on every machine (fuzz_physics in CI: libFuzzer's mutations follow coverage, which
+# differs by an edge between two runs of one input and one build, so a mutating run cannot be
+# repeated; docs/reliability.md).
+#
 # LAMINA_FUZZ_DICT names a dictionary (-dict) and LAMINA_FUZZ_FLAGS adds libFuzzer flags, each
 # fuzzer's own (tests/fuzz/CMakeLists.txt); LAMINA_FUZZ_NO_REGRESSION_SEEDS (set to any word)
 # runs the regressions first only, not as seeds of the fuzzing (the physics fuzzer's are scene
@@ -35,6 +40,16 @@ status=0
 if [ "$status" -ne 0 ]; then
   echo "run_fuzzer.sh: a regression crashed again (exit $status):" \
        "the file named by 'Running:' above." >&2
+  exit "$status"
+fi
+
+if [ "$seconds" = 0 ]; then
+  "$fuzzer" -runs=0 -max_len=8192 -timeout=10 -rss_limit_mb=2048 ${LAMINA_FUZZ_FLAGS:-} \
+    -print_final_stats=1 -artifact_prefix="$work/crashes/" "$work/seeds" "$@" || status=$?
+  if [ "$status" -ne 0 ]; then
+    echo "run_fuzzer.sh: $(basename "$fuzzer") failed on a seed (exit $status); it is in $work/crashes/." >&2
+    echo "Reproduce: $fuzzer <input>; then keep it in $regressions/ under a short name." >&2
+  fi
   exit "$status"
 fi
 

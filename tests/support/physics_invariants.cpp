@@ -22,8 +22,9 @@ namespace {
 
 // Round-off in the bounds: PGS clamps λ_t to ±μ λ_n exactly, the exact and block solvers to the
 // rounding of their pivots and 2 × 2 solves, relative to the step's largest force; Lemke's answer
-// is checked to 1e-9 of max(1, its scale) (lemke.cpp), so below 1e-9 N a force is round-off
-// (found: |λ_t| = 1.3e-12 N against μ λ_n = 0 where every force of the step was below 5e-12 N).
+// is checked row by row to 1e-9 of max(1, the row's scale) (lemke.cpp), so below 1e-9 N a force
+// is round-off (found: |λ_t| = 1.3e-12 N against μ λ_n = 0 where every force of the step was
+// below 5e-12 N).
 constexpr double bound_relative = 1e-9;
 constexpr double bound_absolute = 1e-9;  // in N
 // Lemke's pivots (`exact`, and `islands` on small islands) on the wide kind's MLCPs, whose masses
