@@ -100,15 +100,17 @@ struct Drawn {
   DrawList list;
 };
 
-Drawn draw_test_frame() {
+// The frame drawn as a PNG and as commands; `missing` gets the glyphs no font had.
+Drawn draw_test_frame(const Frame& frame = testing::full_frame(), long* missing = nullptr) {
   const auto context = open_context(default_backend());
   Renderer renderer(*context, slide_size);
   Overlays all = Overlays::parse("all");
   const Style style = Style::for_size(slide_size);
   const Camera camera = Camera::fit({lamina::Vec2(-3.5, -0.5), lamina::Vec2(3.5, 3.2)},
                                     style.drawing_area(slide_size, true));
-  Frame frame = testing::full_frame();
-  return {renderer.render(frame, camera, all), renderer.paint(frame, camera, all)};
+  Drawn drawn{renderer.render(frame, camera, all), renderer.paint(frame, camera, all)};
+  if (missing != nullptr) *missing = renderer.missing_glyphs();
+  return drawn;
 }
 
 }  // namespace
@@ -159,5 +161,37 @@ TEST_SUITE("vector frames") {
                                                      << " % of 4 × 4 blocks differ by more than 24, at most " << d.largest);
     CHECK(d.share_over_24 <= share_bound);  // the same bounds and reasons as the SVG's
     CHECK(d.largest <= largest_bound);
+  }
+
+  TEST_CASE("a Korean caption: every glyph drawn, kept as text in the SVG and the PDF, alike in all three") {
+    // Hangul from Nanum Gothic beside DejaVu's Latin, Greek and symbols (render/font_set.h)
+    Frame frame = testing::full_frame();
+    frame.caption = "그림 4-3  시험 프레임";
+    frame.status = "t = 0.500 s · 단계 30 · 구속조건 λ";
+    long missing = -1;
+    const Drawn drawn = draw_test_frame(frame, &missing);
+    CHECK(missing == 0);
+    ScratchFolder folder("korean");
+    const std::string svg = svg_document(drawn.list, slide_size, Background{});
+    CHECK(svg.find(">그림 4-3  시험 프레임</text>") != std::string::npos);
+    CHECK(svg.find("font-family=\"DejaVu Sans, NanumGothic\"") != std::string::npos);
+    write(folder.path() / "frame.svg", svg);
+    run("rsvg-convert " + (folder.path() / "frame.svg").string() + " -o " + (folder.path() / "svg.png").string());
+    PdfDocument pdf(slide_size);
+    pdf.add_page(drawn.list, Background{});
+    write(folder.path() / "frame.pdf", pdf.finish());
+    const std::string text = run("pdftotext " + (folder.path() / "frame.pdf").string() + " -");
+    CHECK(text.find("그림 4-3 시험 프레임") != std::string::npos);
+    CHECK(text.find("단계 30 · 구속조건 λ") != std::string::npos);
+    run("pdftoppm -png -r 72 " + (folder.path() / "frame.pdf").string() + " " + (folder.path() / "page").string());
+    // the same bounds and reasons as the English frame's: a caption drawn in a wrong font or
+    // as boxes in one output differs in its blocks
+    for (const char* file : {"svg.png", "page-1.png"}) {
+      CAPTURE(std::string(file));
+      const Difference d = difference(drawn.png, png_file(folder.path() / file));
+      MESSAGE(std::string(file) << " against the PNG: " << 100 * d.share_over_24 << " % of blocks over 24, at most " << d.largest);
+      CHECK(d.share_over_24 <= share_bound);
+      CHECK(d.largest <= largest_bound);
+    }
   }
 }

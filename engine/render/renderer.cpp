@@ -118,6 +118,8 @@ Renderer::~Renderer() = default;
 
 void Renderer::set_background(const Background& background) { impl_->background = background; }
 
+long Renderer::missing_glyphs() const { return impl_->text.missing_glyphs(); }
+
 DrawList Renderer::paint(const Frame& frame, const Camera& camera, const Overlays& overlays) {
   return impl_->paint(frame, camera, overlays);
 }

@@ -33,6 +33,8 @@ class Renderer {
   // What lies behind the drawing: the paper colour unless set; transparent gives images with
   // an alpha plane (Image::alpha).
   void set_background(const Background& background);
+  // Characters drawn or measured so far that no font has (font_set.h): each is a .notdef box.
+  long missing_glyphs() const;
 
  private:
   struct Impl;

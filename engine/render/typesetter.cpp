@@ -2,7 +2,6 @@
 
 #include <ft2build.h>
 
-#include <array>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -14,9 +13,6 @@
 
 namespace lamina::render {
 namespace {
-
-constexpr std::array<const char*, 3> face_files{"DejaVuSans.ttf", "DejaVuSans-Bold.ttf",
-                                                "DejaVuSansMono.ttf"};
 
 // FreeType's 26.6 fixed point to pixels.
 double from_26_6(long value) { return value / 64.0; }
@@ -34,13 +30,12 @@ struct Glyph {
 }  // namespace
 
 struct Typesetter::Impl {
-  FT_Library library = nullptr;
-  std::array<FT_Face, face_files.size()> faces{};
+  FontSet fonts;
   std::map<std::tuple<Typeface, int, char32_t>, Glyph> glyphs;
   GlyphAtlas atlas;
 
-  FT_Face sized(Typeface face, int px) {
-    FT_Face f = faces[static_cast<std::size_t>(face)];
+  FT_Face sized(Typeface face, std::size_t font, int px) {
+    FT_Face f = fonts.face(face, font);
     FT_Set_Pixel_Sizes(f, 0, static_cast<FT_UInt>(px));
     return f;
   }
@@ -49,7 +44,7 @@ struct Typesetter::Impl {
     const auto key = std::make_tuple(face, px, point);
     const auto found = glyphs.find(key);
     if (found != glyphs.end()) return found->second;
-    FT_Face f = sized(face, px);
+    FT_Face f = sized(face, fonts.font_for(face, point), px);
     if (FT_Load_Char(f, point, FT_LOAD_RENDER) != 0) {
       throw std::runtime_error("FreeType cannot render U+" + std::to_string(point));
     }
@@ -66,33 +61,12 @@ struct Typesetter::Impl {
   }
 };
 
-std::string font_file(Typeface face) {
-  return std::string(LAMINA_FONT_DIR) + "/" + face_files[static_cast<std::size_t>(face)];
-}
+Typesetter::Typesetter() : impl_(std::make_unique<Impl>()) {}
 
-std::string font_family(Typeface face) { return face == Typeface::mono ? "DejaVu Sans Mono" : "DejaVu Sans"; }
-
-bool is_bold(Typeface face) { return face == Typeface::bold; }
-
-Typesetter::Typesetter() : impl_(std::make_unique<Impl>()) {
-  if (FT_Init_FreeType(&impl_->library) != 0) throw std::runtime_error("cannot start FreeType");
-  for (std::size_t i = 0; i < face_files.size(); ++i) {
-    const std::string path = font_file(static_cast<Typeface>(i));
-    if (FT_New_Face(impl_->library, path.c_str(), 0, &impl_->faces[i]) != 0) {
-      FT_Done_FreeType(impl_->library);
-      throw std::runtime_error("cannot open font " + path +
-                               " (install the Debian package fonts-dejavu-core)");
-    }
-  }
-}
-
-Typesetter::~Typesetter() {
-  for (FT_Face face : impl_->faces) FT_Done_Face(face);
-  FT_Done_FreeType(impl_->library);
-}
+Typesetter::~Typesetter() = default;
 
 LineMetrics Typesetter::metrics(Typeface face, int px) {
-  const FT_Size_Metrics& m = impl_->sized(face, px)->size->metrics;
+  const FT_Size_Metrics& m = impl_->sized(face, 0, px)->size->metrics;
   return {from_26_6(m.ascender), -from_26_6(m.descender), from_26_6(m.height)};
 }
 
@@ -117,5 +91,7 @@ void Typesetter::draw(Mesh& mesh, std::string_view text, const TextStyle& style,
 }
 
 GlyphAtlas& Typesetter::atlas() { return impl_->atlas; }
+
+long Typesetter::missing_glyphs() const { return impl_->fonts.missing_glyphs(); }
 
 }  // namespace lamina::render

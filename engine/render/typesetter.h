@@ -1,23 +1,17 @@
-// Text with FreeType and the DejaVu faces: glyphs rasterised once into the atlas, then drawn as
-// pixel-aligned textured rectangles (sharp at any MSAA setting).
+// Text with FreeType and the fonts of font_set.h (DejaVu, then Nanum Gothic for Hangul): glyphs
+// rasterised once into the atlas as a run first needs them, then drawn as pixel-aligned textured
+// rectangles (sharp at any MSAA setting).
 #pragma once
 
 #include <memory>
 #include <string>
 #include <string_view>
 
+#include "render/font_set.h"
 #include "render/glyph_atlas.h"
 #include "render/mesh.h"
 
 namespace lamina::render {
-
-enum class Typeface { sans, bold, mono };
-
-// The DejaVu font file of a typeface (fonts-dejavu-core), for outputs that embed or name it.
-std::string font_file(Typeface face);
-// Its family name as SVG and CSS know it, e.g. "DejaVu Sans Mono", and whether it is bold.
-std::string font_family(Typeface face);
-bool is_bold(Typeface face);
 
 struct TextStyle {
   Typeface face = Typeface::sans;
@@ -34,13 +28,15 @@ struct LineMetrics {
 
 class Typesetter {
  public:
-  // Loads DejaVu Sans, Sans Bold and Sans Mono. Throws std::runtime_error naming the Debian
-  // package when a font cannot be opened.
+  // Opens the fonts (FontSet). Throws std::runtime_error naming the Debian package when a font
+  // cannot be opened.
   Typesetter();
   ~Typesetter();
   Typesetter(const Typesetter&) = delete;
   Typesetter& operator=(const Typesetter&) = delete;
 
+  // The first font's (DejaVu's), whatever the line holds, so that a Korean caption sits where an
+  // English one does.
   LineMetrics metrics(Typeface face, int px);
   // The advance width of a line of text, in pixels.
   double width(std::string_view text, Typeface face, int px);
@@ -48,6 +44,8 @@ class Typesetter {
   void draw(Mesh& mesh, std::string_view text, const TextStyle& style, const Vec2& origin);
 
   GlyphAtlas& atlas();
+  // Characters drawn or measured so far that no font has (each drawn as a .notdef box).
+  long missing_glyphs() const;
 
  private:
   struct Impl;

@@ -3,14 +3,14 @@
 #include <cairo-ft.h>
 #include <cairo-pdf.h>
 #include <cairo.h>
-#include <ft2build.h>
-#include FT_FREETYPE_H
 
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
+#include "render/font_set.h"
 #include "render/tessellate.h"
 
 namespace lamina::render {
@@ -156,7 +156,9 @@ cairo_status_t append(void* closure, const unsigned char* data, unsigned int len
 
 class CairoSink final : public VectorSink {
  public:
-  CairoSink(cairo_t* cr, const std::array<cairo_font_face_t*, 3>& faces) : cr_(cr), faces_(faces) {}
+  // faces[t][k]: Cairo's face of font k of typeface t's chain (font_set.h)
+  CairoSink(cairo_t* cr, FontSet& fonts, const std::array<std::vector<cairo_font_face_t*>, 3>& faces)
+      : cr_(cr), fonts_(fonts), faces_(faces) {}
 
   void polygon(const std::vector<Vec2>& points, Colour fill) override {
     path(points, true);
@@ -182,11 +184,14 @@ class CairoSink final : public VectorSink {
     cairo_fill(cr_);
   }
   void text(const std::string& line, const TextStyle& style, const Vec2& origin) override {
-    cairo_set_font_face(cr_, faces_[static_cast<std::size_t>(style.face)]);
-    cairo_set_font_size(cr_, style.px);
     source(style.colour);
     cairo_move_to(cr_, origin.x(), origin.y());
-    cairo_show_text(cr_, line.c_str());
+    // each run in its own font; cairo_show_text leaves the point after the run for the next
+    for (const TextRun& run : fonts_.runs(line, style.face)) {
+      cairo_set_font_face(cr_, faces_[static_cast<std::size_t>(style.face)][run.font]);
+      cairo_set_font_size(cr_, style.px);
+      cairo_show_text(cr_, run.text.c_str());
+    }
   }
 
  private:
@@ -211,7 +216,8 @@ class CairoSink final : public VectorSink {
   }
 
   cairo_t* cr_;
-  std::array<cairo_font_face_t*, 3> faces_;
+  FontSet& fonts_;
+  const std::array<std::vector<cairo_font_face_t*>, 3>& faces_;
 };
 
 }  // namespace
@@ -230,20 +236,17 @@ std::string svg_document(const DrawList& list, const FrameSize& size, const Back
 
 struct PdfDocument::Impl {
   std::string bytes;
-  FT_Library library = nullptr;
-  std::array<FT_Face, 3> ft_faces{};
-  std::array<cairo_font_face_t*, 3> faces{};
+  FontSet fonts;
+  std::array<std::vector<cairo_font_face_t*>, 3> faces;  // Cairo's face of each font of each chain
   cairo_surface_t* surface = nullptr;
   cairo_t* cr = nullptr;
 
   explicit Impl(const FrameSize& size) {
-    if (FT_Init_FreeType(&library) != 0) throw std::runtime_error("FreeType could not start");
-    for (std::size_t i = 0; i < faces.size(); ++i) {
-      const std::string path = font_file(static_cast<Typeface>(i));
-      if (FT_New_Face(library, path.c_str(), 0, &ft_faces[i]) != 0) {
-        throw std::runtime_error("cannot open the font '" + path + "' (Debian package fonts-dejavu-core)");
+    for (std::size_t t = 0; t < faces.size(); ++t) {
+      const auto face = static_cast<Typeface>(t);
+      for (std::size_t k = 0; k < font_chain(face).size(); ++k) {
+        faces[t].push_back(cairo_ft_font_face_create_for_ft_face(fonts.face(face, k), 0));
       }
-      faces[i] = cairo_ft_font_face_create_for_ft_face(ft_faces[i], 0);
     }
     surface = cairo_pdf_surface_create_for_stream(append, &bytes, size.width, size.height);
     check(cairo_surface_status(surface), "start a PDF");
@@ -254,13 +257,9 @@ struct PdfDocument::Impl {
   ~Impl() {
     if (cr != nullptr) cairo_destroy(cr);
     if (surface != nullptr) cairo_surface_destroy(surface);
-    for (cairo_font_face_t* face : faces) {
-      if (face != nullptr) cairo_font_face_destroy(face);
+    for (const std::vector<cairo_font_face_t*>& chain : faces) {
+      for (cairo_font_face_t* face : chain) cairo_font_face_destroy(face);
     }
-    for (FT_Face face : ft_faces) {
-      if (face != nullptr) FT_Done_Face(face);
-    }
-    if (library != nullptr) FT_Done_FreeType(library);
   }
 };
 
@@ -275,7 +274,7 @@ void PdfDocument::add_page(const DrawList& list, const Background& background) {
     cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, c.a / 255.0);
     cairo_paint(cr);
   }
-  CairoSink sink(cr, impl_->faces);
+  CairoSink sink(cr, impl_->fonts, impl_->faces);
   emit(list, sink);
   cairo_show_page(cr);
   check(cairo_status(cr), "draw a PDF page");
