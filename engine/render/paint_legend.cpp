@@ -1,6 +1,7 @@
 // The legend: one row per thing the frame shows that needs explaining.
 #include <algorithm>
 
+#include "language/language.h"
 #include "render/paint.h"
 
 namespace lamina::render {
@@ -23,7 +24,8 @@ bool any_friction(const Frame& frame) {
                      [](const Contact& k) { return k.friction_force != 0.0; });
 }
 
-// The frame's own entries, then one per overlay layer that is on and has something to show.
+// The frame's own entries, then one per overlay layer that is on and has something to show, in
+// the current language.
 std::vector<LegendEntry> legend_entries(const Frame& frame, const Overlays& on) {
   std::vector<LegendEntry> entries = frame.legend;
   const bool contacts = !frame.contacts.empty();
@@ -31,21 +33,21 @@ std::vector<LegendEntry> legend_entries(const Frame& frame, const Overlays& on) 
     if (shown) entries.push_back({sample, colour, text});
   };
   add(on.has(Overlay::velocities) && any_moving(frame), Sample::arrow, layer_colour::velocity,
-      "velocity v");
+      tr("velocity v"));
   add(on.has(Overlay::centres) && any_moving(frame), Sample::centre, palette::ink,
-      "centre of mass x");
+      tr("centre of mass x"));
   add(on.has(Overlay::contacts) && any_contact(frame, Contact::Origin::fresh),
-      Sample::fresh_contact, layer_colour::fresh_contact, "new point (no λ from before)");
+      Sample::fresh_contact, layer_colour::fresh_contact, tr("new point (no λ from before)"));
   add(on.has(Overlay::contacts) && any_contact(frame, Contact::Origin::refound),
-      Sample::refound_contact, layer_colour::fresh_contact, "re-found point (warm-started)");
+      Sample::refound_contact, layer_colour::fresh_contact, tr("re-found point (warm-started)"));
   add(on.has(Overlay::contacts) && any_contact(frame, Contact::Origin::kept),
-      Sample::cached_contact, layer_colour::cached_contact, "kept point (cache, eq. 5-12)");
+      Sample::cached_contact, layer_colour::cached_contact, tr("kept point (cache, eq. 5-12)"));
   add(on.has(Overlay::normals) && contacts, Sample::arrow, layer_colour::normal,
-      "contact normal n");
+      tr("contact normal n"));
   add(on.has(Overlay::forces) && contacts, Sample::arrow, layer_colour::normal_force,
-      "normal force λn (length ∝ λ)");
+      tr("normal force λn (length ∝ λ)"));
   add(on.has(Overlay::forces) && any_friction(frame), Sample::arrow, layer_colour::friction,
-      "friction λu");
+      tr("friction λu"));
   return entries;
 }
 

@@ -10,6 +10,7 @@
 #include "app/cli/simulation.h"
 #include "app/cli/work_limits.h"
 #include "app/harness/format.h"
+#include "language/language.h"
 #include "app/harness/viewer.h"
 #include "app/views/contact/world_explanation.h"
 #include "motion/pitfalls.h"
@@ -219,9 +220,9 @@ void run_scene(Scene scene, const RunOptions& o) {
   std::optional<FrameRecording> recording;
   const std::string& description = simulation.scene().description;
   const std::string& name = simulation.scene().name;
-  std::string solver = "solver: " + simulation.world().settings().solver;
+  std::string solver = fill(tr("solver: {0}"), {simulation.world().settings().solver});
   for (const PitfallInfo& p : pitfall_list()) {
-    if (simulation.world().settings().step.pitfalls.has(p.pitfall)) solver += " · pitfall: " + p.name;
+    if (simulation.world().settings().step.pitfalls.has(p.pitfall)) solver += " · " + fill(tr("pitfall: {0}"), {p.name});
   }
   const std::string caption = (description.empty() ? name : name + " · " + description) + " · " + solver;
   if (o.frames || o.render.video) recording.emplace(simulation.world(), o.every, caption);

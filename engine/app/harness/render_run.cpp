@@ -14,6 +14,7 @@
 #include "app/harness/runs.h"
 #include "app/harness/video.h"
 #include "app/harness/viewer.h"
+#include "language/language.h"
 #include "output/output_file.h"
 #include "render/frame_writer.h"
 #include "render/paint.h"
@@ -36,17 +37,17 @@ std::string frame_name(const std::string& scene, int index, const char* extensio
   return scene + name;
 }
 
-// "t = 0.500 s · step 30 · Δt = 1/60 s"
+// "t = 0.500 s · step 30 · Δt = 1/60 s", in the current language
 std::string status_line(long step, double dt) {
-  char text[96];
+  char time[32], interval[32];
+  std::snprintf(time, sizeof time, "%.3f", step * dt);
   const double rate = 1.0 / dt;
   if (std::abs(rate - std::round(rate)) < 1e-9) {
-    std::snprintf(text, sizeof text, "t = %.3f s · step %ld · Δt = 1/%.0f s", step * dt, step,
-                  rate);
+    std::snprintf(interval, sizeof interval, "1/%.0f", rate);
   } else {
-    std::snprintf(text, sizeof text, "t = %.3f s · step %ld · Δt = %.4g s", step * dt, step, dt);
+    std::snprintf(interval, sizeof interval, "%.4g", dt);
   }
-  return text;
+  return fill(tr("t = {0} s · step {1} · Δt = {2} s"), {time, std::to_string(step), interval});
 }
 
 // A CLI11 check that runs `parse` and turns its exception into CLI11's message.
@@ -130,7 +131,13 @@ std::vector<CLI::Option*> add_render_options(CLI::App& app, RenderRequest& reque
                          ->capture_default_str()
                          ->check(CLI::Range(1, 240))
                          ->needs(video);
-  return {size, overlays, backend, format, pages, background, video, fps};
+  // The language is the process's (language.h), set as the options are read, before any output.
+  CLI::Option* lang = app.add_option_function<std::string>(
+      "--lang", [](const std::string& code) { set_language(*language_named(code)); },
+      "the language of captions, legends, panels, plots and explanations: en or ko (Korean, the "
+      "text's language; docs/slides.md)");
+  lang->type_name("LANG")->default_str("en")->check(CLI::IsMember({"en", "ko"}));
+  return {size, overlays, backend, format, pages, background, video, fps, lang};
 }
 
 render::Background parse_background(const std::string& text) {
