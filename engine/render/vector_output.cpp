@@ -234,20 +234,41 @@ std::string svg_document(const DrawList& list, const FrameSize& size, const Back
   return sink.out + "</svg>\n";
 }
 
-struct PdfDocument::Impl {
-  std::string bytes;
+namespace {
+
+// The fonts of every PDF, opened once for the process and never closed. Cairo keeps a font face
+// in caches of its own after its last user lets go, keyed by the FT_Face it was made from; faces
+// closed while Cairo held them let a later FT_Face at the same address be taken for the old one
+// (seen: a Korean caption drawn in DejaVu, as boxes, in 3 of 12 runs, as the heap's addresses
+// fell). Kept for the process, they stay what Cairo thinks they are.
+struct PdfFonts {
   FontSet fonts;
   std::array<std::vector<cairo_font_face_t*>, 3> faces;  // Cairo's face of each font of each chain
-  cairo_surface_t* surface = nullptr;
-  cairo_t* cr = nullptr;
 
-  explicit Impl(const FrameSize& size) {
+  PdfFonts() {
     for (std::size_t t = 0; t < faces.size(); ++t) {
       const auto face = static_cast<Typeface>(t);
       for (std::size_t k = 0; k < font_chain(face).size(); ++k) {
         faces[t].push_back(cairo_ft_font_face_create_for_ft_face(fonts.face(face, k), 0));
       }
     }
+  }
+};
+
+PdfFonts& pdf_fonts() {
+  static PdfFonts* const fonts = new PdfFonts();  // never deleted: see PdfFonts
+  return *fonts;
+}
+
+}  // namespace
+
+struct PdfDocument::Impl {
+  std::string bytes;
+  PdfFonts& fonts = pdf_fonts();
+  cairo_surface_t* surface = nullptr;
+  cairo_t* cr = nullptr;
+
+  explicit Impl(const FrameSize& size) {
     surface = cairo_pdf_surface_create_for_stream(append, &bytes, size.width, size.height);
     check(cairo_surface_status(surface), "start a PDF");
     cr = cairo_create(surface);
@@ -257,9 +278,6 @@ struct PdfDocument::Impl {
   ~Impl() {
     if (cr != nullptr) cairo_destroy(cr);
     if (surface != nullptr) cairo_surface_destroy(surface);
-    for (const std::vector<cairo_font_face_t*>& chain : faces) {
-      for (cairo_font_face_t* face : chain) cairo_font_face_destroy(face);
-    }
   }
 };
 
@@ -274,7 +292,7 @@ void PdfDocument::add_page(const DrawList& list, const Background& background) {
     cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, c.a / 255.0);
     cairo_paint(cr);
   }
-  CairoSink sink(cr, impl_->fonts, impl_->faces);
+  CairoSink sink(cr, impl_->fonts.fonts, impl_->fonts.faces);
   emit(list, sink);
   cairo_show_page(cr);
   check(cairo_status(cr), "draw a PDF page");
