@@ -14,4 +14,11 @@ std::string shortest_number(double x);
 // trace reads as a floating-point number in JSON and spreadsheet tools alike.
 void append_shortest(std::string& out, double x);
 
+// Room enough for what append_shortest writes (at most 24 characters, "-1.7976931348623157e+308";
+// 32 as to_chars is given, and ".0").
+constexpr int shortest_float_length = 34;
+// Writes what append_shortest appends at `first`, which has room for shortest_float_length
+// characters, and returns the end of it: for writers that buffer text themselves.
+char* write_shortest_float(char* first, double x);
+
 }  // namespace lamina

@@ -31,6 +31,10 @@ TraceStep trace_step(const Scene& scene, const World& world, long step) {
   const std::vector<RigidBody>& bodies = world.bodies();
   assert(bodies.size() == scene.bodies.size());
   TraceStep record{step, world.time(), {}, {}};
+  // room for every record at once: grown one by one, a pyramid's ~800 contacts were moved
+  // about ten times a step (a quarter of this function's instructions, callgrind)
+  record.bodies.reserve(bodies.size());
+  record.contacts.reserve(world.contacts().size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!scene.bodies[i].is_static) record.bodies.push_back(body_state(scene.bodies[i].name, bodies[i]));
   }

@@ -19,9 +19,11 @@ void append_field(std::string& out, const std::string& name) {
   out += '"';
 }
 
-// Appends "step,time,names...,values...[,tail]\n".
+// Appends "step,time,names...,values...[,cached,origin]\n": `cached` is ",true," or ",false,",
+// or empty with `origin` for a body's row.
 void append_row(std::string& out, const TraceStep& step, std::initializer_list<const std::string*> names,
-                std::initializer_list<double> values, const std::string& tail = "") {
+                std::initializer_list<double> values, const char* cached = "",
+                const std::string& origin = "") {
   out += std::to_string(step.step);
   out += ',';
   append_shortest(out, step.time);
@@ -33,7 +35,8 @@ void append_row(std::string& out, const TraceStep& step, std::initializer_list<c
     out += ',';
     append_shortest(out, value);
   }
-  out += tail;
+  out += cached;
+  out += origin;
   out += '\n';
 }
 
@@ -47,22 +50,30 @@ std::string trace_csv_contact_header() {
 
 std::string trace_csv_body_rows(const TraceStep& step) {
   std::string rows;
-  for (const BodyState& b : step.bodies) {
-    append_row(rows, step, {&b.name},
-               {b.position[0], b.position[1], b.angle, b.velocity[0], b.velocity[1], b.angular_velocity});
-  }
+  append_trace_csv_body_rows(rows, step);
   return rows;
 }
 
 std::string trace_csv_contact_rows(const TraceStep& step) {
   std::string rows;
+  append_trace_csv_contact_rows(rows, step);
+  return rows;
+}
+
+void append_trace_csv_body_rows(std::string& out, const TraceStep& step) {
+  for (const BodyState& b : step.bodies) {
+    append_row(out, step, {&b.name},
+               {b.position[0], b.position[1], b.angle, b.velocity[0], b.velocity[1], b.angular_velocity});
+  }
+}
+
+void append_trace_csv_contact_rows(std::string& out, const TraceStep& step) {
   for (const ContactState& c : step.contacts) {
-    append_row(rows, step, {&c.bodies[0], &c.bodies[1]},
+    append_row(out, step, {&c.bodies[0], &c.bodies[1]},
                {c.point[0], c.point[1], c.normal[0], c.normal[1], c.depth, c.normal_impulse,
                 c.tangent_impulse},
-               (c.cached ? ",true," : ",false,") + c.origin);
+               c.cached ? ",true," : ",false,", c.origin);
   }
-  return rows;
 }
 
 }  // namespace lamina

@@ -18,5 +18,8 @@ std::string trace_csv_contact_header();
 // The step's rows, each with its line break.
 std::string trace_csv_body_rows(const TraceStep& step);
 std::string trace_csv_contact_rows(const TraceStep& step);
+// The same rows appended to `out`, so that a writer reuses one buffer step after step.
+void append_trace_csv_body_rows(std::string& out, const TraceStep& step);
+void append_trace_csv_contact_rows(std::string& out, const TraceStep& step);
 
 }  // namespace lamina

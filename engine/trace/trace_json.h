@@ -16,6 +16,8 @@ namespace lamina {
 
 // The step as one line of JSON, without the line break.
 std::string trace_json_line(const TraceStep& step);
+// The same line appended to `out`, so that a writer reuses one buffer step after step.
+void append_trace_json_line(std::string& out, const TraceStep& step);
 
 // A line of a JSON Lines trace read back. Throws std::invalid_argument for anything else.
 TraceStep parse_trace_line(const std::string& line);
