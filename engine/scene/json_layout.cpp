@@ -101,6 +101,7 @@ Json scene_document(const Scene& scene) {
             {"gravity", vec2_json(scene.step.gravity.head<2>())}, {"dt", scene.step.dt},
             {"iterations", scene.step.iterations}, {"beta", scene.step.beta},
             {"steps", scene.steps}, {"bodies", Json::array()}, {"joints", Json::array()}};
+  if (!scene.lang.empty()) j["lang"] = scene.lang;  // only a file that says so
   for (const BodyDescription& body : scene.bodies) j["bodies"].push_back(body_json(body));
   for (const JointDescription& joint : scene.joints) j["joints"].push_back(joint_json(joint));
   return j;

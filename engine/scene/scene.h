@@ -65,6 +65,8 @@ struct Scene {
   std::string solver = "islands";    // the method the World steps with (beyond/methods.h)
   StepSettings step;                 // g (in the plane), Δt, β and the PGS sweeps per step
   int steps = 600;                   // how many steps `lamina run` takes unless told
+  std::string lang;                  // "en" or "ko": the frames' language unless --lang says;
+                                     // empty when the file does not say
   std::vector<BodyDescription> bodies;
   std::vector<JointDescription> joints;
 };

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "kinematics/mass_properties.h"
+#include "language/language.h"
 #include "scene/json_layout.h"
 #include "scene/json_reader.h"
 #include "scene/scene_limits.h"
@@ -204,7 +205,7 @@ JointDescription read_joint(const JsonReader& r, const json& j, const std::strin
 
 Scene read_scene(const JsonReader& r, const json& j) {
   r.expect_object(j, "", {"name", "description", "solver", "gravity", "dt", "iterations", "beta", "steps",
-                          "bodies", "joints"});
+                          "lang", "bodies", "joints"});
   Scene scene;
   optional(r, j, "", "name", scene.name, &JsonReader::text);
   optional(r, j, "", "description", scene.description, &JsonReader::text);
@@ -216,6 +217,10 @@ Scene read_scene(const JsonReader& r, const json& j) {
   optional(r, j, "", "iterations", scene.step.iterations, &JsonReader::count, scene_limits::iterations);
   optional(r, j, "", "beta", scene.step.beta, &JsonReader::in_range, scene_limits::beta);
   optional(r, j, "", "steps", scene.steps, &JsonReader::count, scene_limits::steps);
+  optional(r, j, "", "lang", scene.lang, &JsonReader::text);
+  if (j.contains("lang") && !language_named(scene.lang)) {
+    r.fail("lang", "must be one of " + language_codes() + ", got \"" + scene.lang + "\"");
+  }
   const json& bodies = r.array(r.required(j, "", "bodies"), "bodies", 0);
   std::set<std::string> names;  // every body so far
   for (size_t i = 0; i < bodies.size(); ++i) {

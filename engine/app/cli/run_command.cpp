@@ -203,6 +203,8 @@ std::string kept_outputs(const Simulation& simulation, const RunOptions& o,
 void run_scene(const RunOptions& o) { run_scene(load_scene(o.scene), o); }
 
 void run_scene(Scene scene, const RunOptions& o) {
+  // the scene file's language, unless --lang said (the option set it as it was read)
+  if (!o.render.language && !scene.lang.empty()) set_language(*language_named(scene.lang));
   const WorldSettings settings = run_settings(o, scene);
   const long steps = o.steps.value_or(scene.steps);
   if (!o.allow_large) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "language/language.h"
 #include "render/backend.h"
 #include "render/camera.h"
 #include "render/frame.h"
@@ -40,12 +41,14 @@ struct RenderRequest {
   bool write_frames = true;                              // false: the video alone, no frame files
   bool video_per_scene = false;                          // FILE's stem + "_<scene>" (tutorials)
   bool check_layout = false;                             // --check-layout: record every overlap
+  std::optional<Language> language{};                    // --lang en|ko, set_language'd as read
 };
 
 // "paper", "transparent" or "#rrggbb"; throws std::invalid_argument for anything else.
 render::Background parse_background(const std::string& text);
 
-// Adds --size, --overlay, --backend, --format, --pdf-pages and --background to a command line,
+// Adds --size, --overlay, --backend, --format, --pdf-pages, --background, --video, --fps and
+// --lang (which also sets the process's language at once: language.h) to a command line,
 // parsed straight into `request`, whose values are the defaults --help shows. A bad value is one
 // line naming the option. Returns the options (so that a caller can make them need another, as
 // lamina's need --frames or --viewer).

@@ -133,7 +133,11 @@ std::vector<CLI::Option*> add_render_options(CLI::App& app, RenderRequest& reque
                          ->needs(video);
   // The language is the process's (language.h), set as the options are read, before any output.
   CLI::Option* lang = app.add_option_function<std::string>(
-      "--lang", [](const std::string& code) { set_language(*language_named(code)); },
+      "--lang",
+      [&request](const std::string& code) {
+        request.language = language_named(code);
+        set_language(*request.language);
+      },
       "the language of captions, legends, panels, plots and explanations: en or ko (Korean, the "
       "text's language; docs/slides.md)");
   lang->type_name("LANG")->default_str("en")->check(CLI::IsMember({"en", "ko"}));
