@@ -12,6 +12,7 @@
 #include "constraints/dense_system.h"
 #include "constraints/exact_mlcp.h"
 #include "constraints/lemke.h"
+#include "constraints/revolute_joint.h"
 #include "support/random_systems.h"
 #include "contact/solvers.h"
 #include "contact/world.h"
@@ -225,5 +226,29 @@ TEST_SUITE("Lemke") {
       CHECK(x.lambda[i] == doctest::Approx(report.velocity.solution.lambda[i]).epsilon(1e-6).scale(1.0));
     }
     CHECK(x.lambda[0] + x.lambda[1] == doctest::Approx(9.8).epsilon(1e-9));  // m g, N
+  }
+  TEST_CASE("dependent equality rows: the exact λ is the one of least |λ|, the load shared evenly") {
+    // A box hung from the world by two pins at its centre: four rows on two degrees of freedom
+    // (x, y), so J B is singular (rank 2) and LDLᵀ meets a zero pivot. J B λ = η still has
+    // solutions, every split of m g between the two vertical rows; the least |λ| takes m g / 2
+    // each (the minimum norm of λ_a + λ_b = m g), and 0 in x. 1e-9 relative: round-off of a
+    // 4 × 4 decomposition, λ ~ 10 N.
+    World world(with_solver(WorldSettings(), "pgs"));
+    const int box = world.add_box(1.0, 0.5, 0.5, Vec3(0.0, 2.0, 0.0));
+    const double m = world.bodies()[static_cast<std::size_t>(box)].mass;
+    for (int k = 0; k < 2; ++k) {
+      world.add_joint(std::make_unique<RevoluteJoint>(Anchor{lamina::world, Vec3(0.0, 2.0, 0.0)},
+                                                      anchor_at(world.bodies(), box, Vec3(0.0, 2.0, 0.0))));
+    }
+    WorldReport report;
+    world.step(report);
+    const Mlcp& mlcp = report.velocity.mlcp;
+    REQUIRE(mlcp.row_count() == 4);
+    const ExactSolution x = solve_mlcp_exactly(mlcp);
+    REQUIRE(x.status == LemkeStatus::solved);
+    CHECK(std::abs(x.lambda[0]) <= 1e-9 * m * 9.8);  // the two joints' x rows
+    CHECK(std::abs(x.lambda[2]) <= 1e-9 * m * 9.8);
+    CHECK(x.lambda[1] == doctest::Approx(m * 9.8 / 2.0).epsilon(1e-9));  // their y rows
+    CHECK(x.lambda[3] == doctest::Approx(m * 9.8 / 2.0).epsilon(1e-9));
   }
 }

@@ -79,6 +79,7 @@ class IslandMethod final : public StepMethod {
     Island all;  // the substep's MLCP is the island's rows, all of them
     all.lcp_size = island.lcp_size;
     for (int i = 0; i < static_cast<int>(local.size()); ++i) all.rows.push_back(i);
+    bool pivoting = true;
     for (int s = 0; s < joint_substeps; ++s) {
       for (const auto& [joint, first] : joints) {
         written_.clear();
@@ -90,11 +91,15 @@ class IslandMethod final : public StepMethod {
         body.force = external[k].head<3>();
         body.torque = external[k].tail<3>();
       }
-      // eq. 3-16 for the substep, solved exactly (PGS if Lemke gives up)
+      // eq. 3-16 for the substep, solved exactly (PGS if Lemke gives up). Once Lemke has given
+      // up in a step, the step's later substeps go to PGS without asking it again: their MLCPs
+      // differ little, and a failed pivoting costs hundreds of PGS sweeps (a box on
+      // a nearly straight bridge, whose dependent pins Lemke cannot resolve: 8× the time).
       unconstrained_velocities(bodies, h, unconstrained_);
       substep_mlcp_.assemble(bodies, rows_, unconstrained_, h);
-      solve_island(substep_mlcp_, all, problem.settings.step.iterations, scratch_, pgs_, local,
-                   problem.settings.step.pitfalls);
+      const IslandSolve how = solve_island(substep_mlcp_, all, problem.settings.step.iterations, scratch_,
+                                           pgs_, local, problem.settings.step.pitfalls, pivoting);
+      pivoting = how == IslandSolve::exact;
       // eq. 3-11: F_c = Jᵀ λ, then chapter 2's step over h
       substep_mlcp_.add_constraint_forces(bodies, local.data());
       for (const int b : island.bodies) {

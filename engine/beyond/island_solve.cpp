@@ -7,7 +7,8 @@
 namespace lamina {
 
 IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlcp& scratch,
-                         PgsSolver& pgs, std::vector<double>& lambda, Pitfalls pitfalls) {
+                         PgsSolver& pgs, std::vector<double>& lambda, Pitfalls pitfalls,
+                         bool try_exact) {
   // An island of every row is the MLCP itself: solved in place, nothing copied (a pyramid)
   const bool whole = static_cast<int>(island.rows.size()) == mlcp.row_count();
   if (!whole) scratch.assemble_subset(mlcp, island.rows);
@@ -25,7 +26,7 @@ IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlc
   for (int i = 0; i < own.row_count() && finite; ++i) {
     finite = std::isfinite(own.eta(i)) && std::isfinite(own.d(i));
   }
-  if (finite && island.lcp_size <= exact_island_limit && has_exact_form(own)) {
+  if (try_exact && finite && island.lcp_size <= exact_island_limit && has_exact_form(own)) {
     const ExactSolution exact = solve_mlcp_exactly(own);
     if (exact.status == LemkeStatus::solved) {
       for (int i = 0; i < own.row_count(); ++i) own_lambda[i] = exact.lambda[i];

@@ -25,9 +25,10 @@ enum class IslandSolve { exact, pgs };
 // exactly (exact_mlcp.h) when the island has at most exact_island_limit variables and the solve
 // ends in a solution, else by `sweeps` PGS sweeps from the λ there (with the PGS pitfalls).
 // Rows the exact form cannot take (a friction row with fixed bounds: crude-friction) go to PGS
-// too. `scratch` and `pgs` are working memory.
+// too, and so does every island when `try_exact` is false. `scratch` and `pgs` are working memory.
 IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlcp& scratch,
-                         PgsSolver& pgs, std::vector<double>& lambda, Pitfalls pitfalls = {});
+                         PgsSolver& pgs, std::vector<double>& lambda, Pitfalls pitfalls = {},
+                         bool try_exact = true);
 
 // Steps 6 and 7 after the velocity solve: the split-impulse push-out (when the settings ask for
 // it, recorded in the report), F_c = Jᵀ λ and chapter 2's step for every body whose `skip` entry

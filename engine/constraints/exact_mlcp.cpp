@@ -74,11 +74,24 @@ ExactSolution solve_mlcp_exactly(const Mlcp& mlcp) {
     // rows, solved by Cholesky with pivoting (LDLᵀ).
     Eigen::VectorXd eta(n);
     for (int i = 0; i < n; ++i) eta[i] = mlcp.eta(i);
+    const auto solves = [&](const Eigen::VectorXd& lambda) {
+      return lambda.allFinite() && (JB * lambda - eta).norm() <= 1e-9 * (1.0 + eta.norm());
+    };
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(JB);
     ExactSolution out;
     out.lambda = ldlt.solve(eta);
-    const bool solved = ldlt.info() == Eigen::Success && out.lambda.allFinite() &&
-                        (JB * out.lambda - eta).norm() <= 1e-9 * (1.0 + eta.norm());
+    // Dependent rows (a straight bridge pinned at both ends: 11 pins' horizontal rows on 10
+    // planks) make J B singular: LDLᵀ meets a pivot that is zero to round-off, and its λ, when
+    // it gives one, loads the dependent rows arbitrarily. When J B λ = η still has solutions,
+    // the one of least |λ| shares the load evenly among them; a complete orthogonal
+    // decomposition finds it.
+    const Eigen::VectorXd pivots = ldlt.vectorD().cwiseAbs();
+    const bool singular = n > 0 && pivots.minCoeff() <= 1e-12 * pivots.maxCoeff();
+    bool solved = !singular && ldlt.info() == Eigen::Success && solves(out.lambda);
+    if (!solved) {
+      out.lambda = JB.completeOrthogonalDecomposition().solve(eta);
+      solved = solves(out.lambda);
+    }
     out.status = solved ? LemkeStatus::solved : LemkeStatus::ray;
     if (!solved) out.lambda.setZero();
     return out;

@@ -11,8 +11,9 @@
 // these two directions, so this is Coulomb friction, not an approximation of it (Stewart and
 // Trinkle 1996; Anitescu and Potra 1997). M is not positive semidefinite once friction is in,
 // and Lemke may then end in a ray: the result says so. An MLCP of equality rows alone (a chain of
-// joints) has no complementarity left: J B λ = η is solved directly (LDLᵀ), and a singular J B
-// (dependent rows) is reported as a ray.
+// joints) has no complementarity left: J B λ = η is solved directly (LDLᵀ); a singular J B
+// (dependent rows) gets the solution of least |λ| when there is one, and is reported as a ray
+// when there is none.
 #pragma once
 
 #include <Eigen/Core>
