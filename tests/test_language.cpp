@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <string>
+#include <vector>
 
 #include "language/language.h"
 
@@ -45,5 +46,21 @@ TEST_SUITE("language") {
     CHECK(fill("{1}: {0}", {"a", "b"}) == "b: a");
     // what is no placeholder is kept: braces, a number past the values, a brace at the end
     CHECK(fill("{x} {2} {", {"a"}) == "{x} {2} {");
+  }
+  TEST_CASE("english_words: words of two or more Latin letters, but not units, functions or names") {
+    using Words = std::vector<std::string>;
+    // words left, in order, each once per occurrence
+    CHECK(english_words("friction λu") == Words{"friction"});
+    CHECK(english_words("Ch 1 · Fig 1-2 (eq. 1-27)") == Words{"Ch", "Fig", "eq"});
+    // Korean, symbols, numbers with exponents, units and the equations' functions are kept
+    CHECK(english_words("마찰력 λu = 0.25 N, |ṙᵢ| = |sin α| |rᵢ| |ω| = 1.2e-4 m/s, 0.8 rad/s").empty());
+    CHECK(english_words("max|Ṙ Rᵀ − Skew(ω)| = 3e-10 (식 1-27)").empty());
+    // names the Korean keeps: solvers and pitfalls as --solver and --pitfall take them
+    CHECK(english_words("솔버: soft-step · 함정: no-warm-start · Box2D v3.1.1 · PGS").empty());
+    // a hyphen or a digit joins a word, so a name's part is no pass for an English word
+    CHECK(english_words("soft-steps") == Words{"soft-steps"});
+    CHECK(english_words("pgs2") == Words{"pgs2"});
+    // one letter is a symbol, not a word; so is a letter after a digit (1e-4, 2D)
+    CHECK(english_words("x, v, J, q = w + (x, y, z), 3D").empty());
   }
 }

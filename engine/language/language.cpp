@@ -1,14 +1,16 @@
 #include "language/language.h"
 
 #include <cstdint>
+#include <cctype>
 #include <cstring>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <vector>
 
 namespace lamina {
 
-// ko.po as msgfmt compiled it (catalogue_ko.cpp, written at build time by embed_catalogue.cmake).
+// engine/language/ko/*.po as msgcat joined and msgfmt compiled them (catalogue_ko.cpp, written at build time by embed_catalogue.cmake).
 extern const unsigned char ko_catalogue[];
 extern const std::size_t ko_catalogue_size;
 
@@ -69,6 +71,11 @@ const char* tr(const char* english) {
   return found == korean().end() ? english : found->second.c_str();
 }
 
+std::vector<std::pair<std::string, std::string>> translations() {
+  if (current == Language::en) return {};
+  return {korean().begin(), korean().end()};
+}
+
 std::string fill(std::string_view pattern, std::initializer_list<std::string_view> values) {
   const std::vector<std::string_view> list(values);
   std::string out;
@@ -83,6 +90,45 @@ std::string fill(std::string_view pattern, std::initializer_list<std::string_vie
     }
   }
   return out;
+}
+
+std::vector<std::string> english_words(std::string_view text) {
+  // What a Korean frame keeps in Latin letters. Units (SI, as the text writes them), the
+  // functions of its equations, and names: methods and algorithms by their authors' names or
+  // acronyms, the libraries and formats Lamina names, its solvers and pitfalls by their names
+  // (what `--solver` and `--pitfall` take).
+  static const std::set<std::string_view> kept = {
+      "Box2D", "CSV", "EPA", "GJK", "Gauss-Seidel", "Hz", "JSON", "LCP", "Lamina", "Lemke",
+      "MLCP", "PGS", "PNG", "Rodrigues", "Rz", "Skew", "XPBD", "abs", "atan2", "baumgarte-no-slop", "block",
+      "clamp-increment", "cm", "cos", "crude-friction", "det", "diag", "exact", "exp", "fps",
+      "islands", "kg", "lambda-b1", "ln", "log", "max", "min", "mm", "ms", "no-renormalisation",
+      "no-warm-start", "pgs", "px", "rad", "sgn", "sign", "sin", "soft-step", "sqrt", "tan",
+      "text", "v3", "v3.1.1"};
+  std::vector<std::string> words;
+  const auto latin = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); };
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (!latin(text[i]) || (i > 0 && (std::isalnum(static_cast<unsigned char>(text[i - 1])) != 0))) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i, letters = 0;
+    while (end < text.size()) {
+      const char c = text[end];
+      if (latin(c)) {
+        ++letters;
+      } else if (!(std::isdigit(static_cast<unsigned char>(c)) != 0 ||
+                   ((c == '-' || c == '.') && end + 1 < text.size() &&
+                    std::isalnum(static_cast<unsigned char>(text[end + 1])) != 0))) {
+        break;
+      }
+      ++end;
+    }
+    const std::string_view word = text.substr(i, end - i);
+    if (letters >= 2 && kept.count(word) == 0) words.emplace_back(word);
+    i = end;
+  }
+  return words;
 }
 
 }  // namespace lamina

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "language/language.h"
+
 namespace lamina::render {
 
 Vec2 ObliqueProjection::project(const Vec3& p) const {
@@ -10,11 +12,13 @@ Vec2 ObliqueProjection::project(const Vec3& p) const {
 }
 
 std::string ObliqueProjection::description() const {
-  const char* name = z_scale == 0.5 ? "cabinet" : z_scale == 1.0 ? "cavalier" : "oblique";
-  char text[96];
-  std::snprintf(text, sizeof text, "%s projection: z drawn at %.0f°, × %g", name,
-                z_angle * 180.0 / M_PI, z_scale);
-  return text;
+  char angle[16], scale[32];
+  std::snprintf(angle, sizeof angle, "%.0f", z_angle * 180.0 / M_PI);
+  std::snprintf(scale, sizeof scale, "%g", z_scale);
+  const char* pattern = z_scale == 0.5   ? tr("cabinet projection: z drawn at {0}°, × {1}")
+                        : z_scale == 1.0 ? tr("cavalier projection: z drawn at {0}°, × {1}")
+                                         : tr("oblique projection: z drawn at {0}°, × {1}");
+  return fill(pattern, {angle, scale});
 }
 
 }  // namespace lamina::render

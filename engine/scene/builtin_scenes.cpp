@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <map>
 
+#include "language/language.h"
 #include "scene/builtin_parts.h"
 #include "scene/convex_scenes.h"
 #include "scene/scene_json.h"
@@ -197,23 +198,23 @@ Scene see_saw() {
 }
 
 // What a pyramid of `rows` rows is, written once for the list and for every pyramid:N.
-std::string pyramid_description(double n) {
+std::string pyramid_description(double n, Wording words) {
   const int rows = static_cast<int>(n);
-  return "a pyramid of " + std::to_string(rows * (rows + 1) / 2) + " boxes placed touching, " +
-         std::to_string(rows) + " in its base";
+  return fill(words(msg("a pyramid of {0} boxes placed touching, {1} in its base")),
+              {std::to_string(rows * (rows + 1) / 2), std::to_string(rows)});
 }
 
-std::string stack_description(double n) {
-  return std::to_string(static_cast<int>(n)) + " boxes placed touching, one on another";
+std::string stack_description(double n, Wording words) {
+  return fill(words(msg("{0} boxes placed touching, one on another")), {std::to_string(static_cast<int>(n))});
 }
 
-std::string heavy_description(double ratio) {
-  return "a box " + shortest_number(ratio) + " times as dense resting on a unit box";
+std::string heavy_description(double ratio, Wording words) {
+  return fill(words(msg("a box {0} times as dense resting on a unit box")), {shortest_number(ratio)});
 }
 
-std::string chain_description(double ratio) {
-  return "ten links pinned from (0, 10), released level, with a ball " + shortest_number(ratio) +
-         " times the chain's mass";
+std::string chain_description(double ratio, Wording words) {
+  return fill(words(msg("ten links pinned from (0, 10), released level, with a ball {0} times the chain's mass")),
+              {shortest_number(ratio)});
 }
 
 // A family of scenes `NAME:P`: what P is, its range and default, and how to build a member.
@@ -223,7 +224,7 @@ struct Family {
   bool whole;                       // P must be a whole number
   double low, high;                 // P's range
   double fallback;                  // the member `NAME` alone gives
-  std::string (*describe)(double);  // a member's description
+  std::string (*describe)(double, Wording);  // a member's description
   Scene (*build)(double);           // a member but for its name and description
 };
 
@@ -252,27 +253,27 @@ struct Recipe {
 // Every built-in scene by name; the list reads it without building any scene.
 const std::map<std::string, Recipe>& recipes() {
   static const std::map<std::string, Recipe> table = {
-      {"box-on-ground", {"a box dropped flat from y = 2 onto the ground",
+      {"box-on-ground", {msg("a box dropped flat from y = 2 onto the ground"),
                          [] { return box_on_ground(2.0, 0.0); }}},
-      {"box-on-ground-tilted", {"a box dropped from y = 2 tilted by 0.3 rad (Fig 4-2..4-5)",
+      {"box-on-ground-tilted", {msg("a box dropped from y = 2 tilted by 0.3 rad (Fig 4-2..4-5)"),
                                 [] { return box_on_ground(2.0, 0.3); }}},
-      {"box-on-ground-resting", {"a box placed resting on the ground",
+      {"box-on-ground-resting", {msg("a box placed resting on the ground"),
                                  [] { return box_on_ground(half, 0.0); }}},
-      {"incline", {"a box sliding on a frictionless 30° ramp, held up by contact",
+      {"incline", {msg("a box sliding on a frictionless 30° ramp, held up by contact"),
                    [] { return ramp(M_PI / 6, 0.0); }}},
-      {"friction-ramp", {"a box on a 30° ramp with μ = 0.4 < tan 30°: it slides",
+      {"friction-ramp", {msg("a box on a 30° ramp with μ = 0.4 < tan 30°: it slides"),
                          [] { return ramp(M_PI / 6, 0.4); }}},
-      {"pendulum", {"a disc on a 2 m rod, released horizontal (distance constraint)", pendulum}},
-      {"angle-limit", {"a pinned bar released level; an angle limit stops it 0.5 rad past hanging",
+      {"pendulum", {msg("a disc on a 2 m rod, released horizontal (distance constraint)"), pendulum}},
+      {"angle-limit", {msg("a pinned bar released level; an angle limit stops it 0.5 rad past hanging"),
                        angle_limit}},
-      {"incline-constraint", {"a box held on a frictionless 30° line (Fig 3-1, incline constraint)",
+      {"incline-constraint", {msg("a box held on a frictionless 30° line (Fig 3-1, incline constraint)"),
                               incline_constraint}},
-      {"chain", {"eight links pinned end to end, released horizontal (revolute joints)", chain}},
-      {"dominoes", {"ten dominoes; the first is pushed over", dominoes}},
-      {"bridge", {"ten planks pinned end to end between two posts, a box dropped on them", bridge}},
-      {"see-saw", {"a plank pinned on a post; a box dropped on one end", see_saw}},
-      {"wedge-ramp", {"a hexagon tumbling down a 35° polygon wedge", wedge_ramp}},
-      {"capsule-pile", {"thirty capsules dropped in layers between two walls", capsule_pile}},
+      {"chain", {msg("eight links pinned end to end, released horizontal (revolute joints)"), chain}},
+      {"dominoes", {msg("ten dominoes; the first is pushed over"), dominoes}},
+      {"bridge", {msg("ten planks pinned end to end between two posts, a box dropped on them"), bridge}},
+      {"see-saw", {msg("a plank pinned on a post; a box dropped on one end"), see_saw}},
+      {"wedge-ramp", {msg("a hexagon tumbling down a 35° polygon wedge"), wedge_ramp}},
+      {"capsule-pile", {msg("thirty capsules dropped in layers between two walls"), capsule_pile}},
   };
   return table;
 }
@@ -282,7 +283,7 @@ const std::map<std::string, Recipe>& recipes() {
 std::vector<BuiltinScene> builtin_scene_list() {
   std::vector<BuiltinScene> list;
   for (const auto& [name, recipe] : recipes()) list.push_back({name, recipe.description});
-  for (const auto& [name, family] : families()) list.push_back({name, family.describe(family.fallback)});
+  for (const auto& [name, family] : families()) list.push_back({name, family.describe(family.fallback, as_written)});
   std::sort(list.begin(), list.end(),
             [](const BuiltinScene& a, const BuiltinScene& b) { return a.name < b.name; });
   return list;
@@ -299,21 +300,16 @@ std::vector<SceneFamily> builtin_scene_families() {
   return list;
 }
 
-Scene builtin_scene(const std::string& name) {
-  const auto recipe = recipes().find(name);
-  if (recipe != recipes().end()) {
-    Scene scene = recipe->second.build();
-    scene.name = recipe->first;
-    scene.description = recipe->second.description;
-    return scene;
-  }
+namespace {
+
+// A family's member by its name "NAME:P" (or "NAME", the default): the family and P. nullptr for
+// a name of no family; throws SceneError for a P out of the family's range.
+const Family* family_member(const std::string& name, double& p) {
   const std::string family_name = name.substr(0, name.find(':'));
   const auto family = families().find(family_name);
-  if (family == families().end()) {
-    throw SceneError(name + ": no such built-in scene (see `lamina scenes`)");
-  }
+  if (family == families().end()) return nullptr;
   const Family& f = family->second;
-  double p = f.fallback;
+  p = f.fallback;
   if (family_name != name) {
     const std::string text = name.substr(family_name.size() + 1);
     char* end = nullptr;
@@ -325,10 +321,44 @@ Scene builtin_scene(const std::string& name) {
                        shortest_number(f.low) + ", " + shortest_number(f.high) + "]");
     }
   }
-  Scene scene = f.build(p);
-  scene.name = p == f.fallback ? family_name : family_name + ":" + shortest_number(p);
-  scene.description = f.describe(p);
+  return &f;
+}
+
+}  // namespace
+
+Scene builtin_scene(const std::string& name) {
+  const auto recipe = recipes().find(name);
+  if (recipe != recipes().end()) {
+    Scene scene = recipe->second.build();
+    scene.name = recipe->first;
+    scene.description = recipe->second.description;
+    return scene;
+  }
+  double p = 0.0;
+  const Family* f = family_member(name, p);
+  if (f == nullptr) throw SceneError(name + ": no such built-in scene (see `lamina scenes`)");
+  const std::string family_name = name.substr(0, name.find(':'));
+  Scene scene = f->build(p);
+  scene.name = p == f->fallback ? family_name : family_name + ":" + shortest_number(p);
+  scene.description = f->describe(p, as_written);
   return scene;
+}
+
+std::string shown_description(const Scene& scene) {
+  if (current_language() == Language::en) return scene.description;
+  const auto recipe = recipes().find(scene.name);
+  if (recipe != recipes().end()) {
+    return scene.description == recipe->second.description ? tr(recipe->second.description.c_str())
+                                                           : scene.description;
+  }
+  double p = 0.0;
+  try {
+    const Family* f = family_member(scene.name, p);
+    if (f != nullptr && scene.description == f->describe(p, as_written)) return f->describe(p, tr);
+  } catch (const SceneError&) {
+    // a scene file's own name that looks like a family's member: its description as written
+  }
+  return scene.description;
 }
 
 Scene pyramid_scene(int rows) {
@@ -342,7 +372,7 @@ Scene pyramid_scene(int rows) {
   }
   Scene s = with(bodies);
   s.name = rows == pyramid_rows ? "pyramid" : "pyramid:" + std::to_string(rows);
-  s.description = pyramid_description(rows);
+  s.description = pyramid_description(rows, as_written);
   return s;
 }
 

@@ -32,6 +32,10 @@ std::vector<SceneFamily> builtin_scene_families();
 // (builtin_scene_families). Throws SceneError for an unknown name or a parameter out of range.
 Scene builtin_scene(const std::string& name);
 
+// The scene's description as a frame shows it: a built-in scene's (its description unchanged) in
+// the current language (language.h), any other as written.
+std::string shown_description(const Scene& scene);
+
 // A pyramid of boxes (half extents 0.5, placed touching) with `rows` boxes in its base.
 Scene pyramid_scene(int rows);
 

@@ -86,10 +86,10 @@ Scene hexagon_pyramid(double n) {
   return with(bodies);
 }
 
-std::string hexagon_pyramid_description(double n) {
+std::string hexagon_pyramid_description(double n, Wording words) {
   const int rows = static_cast<int>(n);
-  return "a honeycomb pyramid of " + std::to_string(rows * (rows + 1) / 2) + " hexagons, " +
-         std::to_string(rows) + " in its base";
+  return fill(words(msg("a honeycomb pyramid of {0} hexagons, {1} in its base")),
+              {std::to_string(rows * (rows + 1) / 2), std::to_string(rows)});
 }
 
 }  // namespace lamina::builtin

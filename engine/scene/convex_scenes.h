@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "language/language.h"
 #include "scene/scene.h"
 
 namespace lamina::builtin {
@@ -16,6 +17,6 @@ Scene capsule_pile();
 
 // A honeycomb pyramid of regular hexagons with `n` in its base, and its description.
 Scene hexagon_pyramid(double n);
-std::string hexagon_pyramid_description(double n);
+std::string hexagon_pyramid_description(double n, Wording words);
 
 }  // namespace lamina::builtin

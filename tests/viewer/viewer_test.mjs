@@ -12,7 +12,7 @@
 // usage: node viewer_test.mjs <chromium> <lamina> <page folder> <trace.jsonl> <scene>
 //        node viewer_test.mjs --pages <chromium> <page folder>...
 //          (every tutorial's page: each of its scenes opens, its first steps and sweeps are shown
-//           with no console error)
+//           with no console error; a page written with --lang ko shows no English of its own)
 import { spawn, execFileSync } from "node:child_process";
 import { readFileSync, writeFileSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
@@ -158,7 +158,20 @@ try {
         assert.equal(now.step, Math.min(3, runs[r].steps - 1), `${pageFolder} run ${r} (${runs[r].scene}): → three times`);
         assert.ok(now.frame > 0, `${pageFolder} run ${r}: the frame loaded`);
       }
-      console.log(`${pageFolder}: ${runs.length} scenes shown`);
+      const lang = JSON.parse(readFileSync(join(pageFolder, "data.js"), "utf8").replace(/^window\.LAMINA_VIEWER = /, "").replace(/;\s*$/, "")).lang;
+      if (lang === "ko") {
+        // a Korean page: its own words (headings, table heads, readouts, notes) have no English
+        // left but names (the scene's, its bodies', the method's), a code name (World::step), a
+        // file (docs/….md) and the words the frames keep too (language.h, english_words)
+        const text = await evaluate(`[...document.querySelectorAll("h1, h2, th, summary, #keys, #readout, #sweep-readout, #energy, .empty, .note")]
+          .map((e) => e.textContent).join("\\n")`);
+        const kept = new Set(["Lamina", "MLCP", "exp", ...runs.flatMap((r) => [r.scene, r.program, ...r.bodies]),
+                              ...runs.flatMap((r) => r.detail_of.map((d) => d.method))]);
+        const english = (text.replace(/\S+\.md|\w+::\w+/g, "").match(/(?<!\w)[A-Za-z][A-Za-z0-9-]+/g) || []).filter((w) => !kept.has(w));
+        assert.deepEqual(english, [], `${pageFolder}: English left on the Korean page`);
+        assert.equal(await evaluate("document.documentElement.lang"), "ko", `${pageFolder}: <html lang="ko">`);
+      }
+      console.log(`${pageFolder}: ${runs.length} scenes shown${lang === "ko" ? ", in Korean" : ""}`);
     }
     assert.deepEqual(errors, [], "no console errors");
     process.exitCode = 0;

@@ -14,6 +14,7 @@
 #include "app/harness/viewer.h"
 #include "app/views/contact/world_explanation.h"
 #include "motion/pitfalls.h"
+#include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
 
 namespace lamina::cli {
@@ -220,7 +221,7 @@ void run_scene(Scene scene, const RunOptions& o) {
   std::optional<TraceWriter> trace;
   if (o.trace) simulation.record_to(trace.emplace(*o.trace));
   std::optional<FrameRecording> recording;
-  const std::string& description = simulation.scene().description;
+  const std::string description = shown_description(simulation.scene());
   const std::string& name = simulation.scene().name;
   std::string solver = fill(tr("solver: {0}"), {simulation.world().settings().solver});
   for (const PitfallInfo& p : pitfall_list()) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/harness/runs.h"
+#include "language/language.h"
 
 namespace lamina::tutorial {
 namespace {
@@ -21,7 +22,7 @@ void print(const Options& o, const StepContext& context, const Explanation& expl
 // Waits for Enter on a terminal; false when the reader typed q (or closed the input).
 bool next_step_wanted() {
   if (!isatty(STDIN_FILENO)) return true;
-  std::cerr << "-- Enter: next step, q: quit -- " << std::flush;
+  std::cerr << tr("-- Enter: next step, q: quit -- ") << std::flush;
   std::string line;
   return std::getline(std::cin, line) && line != "q";
 }

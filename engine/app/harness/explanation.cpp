@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <string>
+
+#include "language/language.h"
 
 namespace lamina::tutorial {
 namespace {
@@ -51,7 +54,7 @@ std::string inline_value(const Json& v) {
 
 void write_quantity(std::ostringstream& out, const Quantity& q) {
   out << "  " << q.symbol;
-  if (!q.equation.empty()) out << "  [eq. " << q.equation << "]";
+  if (!q.equation.empty()) out << "  " << fill(tr("[eq. {0}]"), {q.equation});
   out << "  " << q.meaning << "\n";
   const std::string unit = q.unit.empty() ? "" : " " + q.unit;
   if (!is_matrix(q.value)) {
@@ -69,8 +72,10 @@ void write_quantity(std::ostringstream& out, const Quantity& q) {
 
 std::string to_text(const StepContext& c, const Explanation& explanation) {
   std::ostringstream out;
-  out << c.program << " — " << c.scene << ", step " << c.step << ": t = " << number(c.time)
-      << " s → " << number(c.time + c.time_step) << " s (Δt = " << number(c.time_step) << " s)\n";
+  out << fill(tr("{0} — {1}, step {2}: t = {3} s → {4} s (Δt = {5} s)"),
+              {c.program, c.scene, std::to_string(c.step), number(c.time),
+               number(c.time + c.time_step), number(c.time_step)})
+      << "\n";
   for (const Section& s : explanation) {
     out << "\n" << s.title << "\n";
     for (const Quantity& q : s.quantities) write_quantity(out, q);

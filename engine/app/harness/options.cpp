@@ -41,7 +41,8 @@ ParsedOptions parse_options(int argc, char** argv, const TutorialInfo& info) {
       ->excludes(explain_option);
   app.add_flag("--check-layout", o.render.check_layout,
                "paint every frame and check its layout, writing no frame: fail, naming them, when "
-               "a legend, panel or label covers a body or another (docs/slides.md)");
+               "a legend, panel or label covers a body or another, a character has no font, or "
+               "(with --lang ko) English is left (docs/slides.md)");
   if (info.has_cache) app.add_flag("--no-cache", o.no_cache, "solve without the contact cache");
   if (!info.solvers.empty()) {
     app.add_option_function<std::string>(

@@ -97,7 +97,9 @@ class FrameRenderer {
   LegendPlace place_legend(std::size_t count, const std::function<const render::Frame&(std::size_t)>& frame_at,
                            render::Rect view);
   // With request.check_layout, each frame rendered whose legend, panels or labels cover a body
-  // or each other: "<name>_0012: legend 3 and body 0 overlap" (render::layout_overlaps).
+  // or each other: "<name>_0012: legend 3 and body 0 overlap" (render::layout_overlaps); that
+  // draws a character no font has ("<name>_0012: 2 characters no font has"); or, in a language
+  // other than English, that draws English (english_words: "<name>_0012: English "step" in …").
   const std::vector<std::string>& layout_problems() const { return layout_problems_; }
   // The layout boxes (render/draw_list.h) of `frame` as render() would draw it in `view`.
   std::vector<render::LayoutBox> layout(const render::Frame& frame, const render::Rect& view);

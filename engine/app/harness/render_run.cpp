@@ -265,10 +265,25 @@ int FrameRenderer::render(const std::string& name, const render::Rect& view, dou
     if (frame.status.empty()) frame.status = status_line(step, dt);
     render::Renderer& renderer = pipeline_->renderer;
     if (request_.check_layout) {  // paint and check; draw and write nothing
-      for (const std::string& overlap : render::layout_overlaps(renderer.paint(frame, camera, request_.overlays).layout())) {
-        char index[16];
-        std::snprintf(index, sizeof index, "_%04d", count);
+      char index[16];
+      std::snprintf(index, sizeof index, "_%04d", count);
+      const long missing_before = renderer.missing_glyphs();
+      const render::DrawList list = renderer.paint(frame, camera, request_.overlays);
+      for (const std::string& overlap : render::layout_overlaps(list.layout())) {
         layout_problems_.push_back(name + index + ": " + overlap);
+      }
+      if (renderer.missing_glyphs() > missing_before) {
+        layout_problems_.push_back(name + index + ": " +
+                                   std::to_string(renderer.missing_glyphs() - missing_before) +
+                                   " characters no font has");
+      }
+      if (current_language() != Language::en) {  // a translated frame: no English left
+        for (const render::DrawCommand& command : list.commands()) {
+          for (const std::string& word : english_words(command.text)) {
+            layout_problems_.push_back(name + index + ": English \"" + word + "\" in \"" +
+                                       command.text + "\"");
+          }
+        }
       }
       ++count;
       continue;

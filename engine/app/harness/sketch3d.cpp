@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "language/language.h"
+
 namespace lamina::tutorial {
 
 std::vector<Vec3> arc(const Vec3& centre, const Vec3& u, const Vec3& w, double radius,
@@ -33,7 +35,7 @@ void draw_world_axes(render::Frame& frame, const Vec3& origin, double length) {
     frame.arrows3.push_back({origin, origin + length * Vec3::Unit(i), grey, names[i]});
   }
   frame.legend.push_back(
-      {render::LegendEntry::Sample::arrow, grey, "world axes; " + frame.projection.description()});
+      {render::LegendEntry::Sample::arrow, grey, fill(tr("world axes; {0}"), {frame.projection.description()})});
 }
 
 }  // namespace lamina::tutorial

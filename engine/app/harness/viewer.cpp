@@ -7,6 +7,7 @@
 
 #include "app/harness/format.h"
 #include "app/harness/viewer_page.h"
+#include "language/language.h"
 #include "output/output_file.h"
 
 namespace lamina::tutorial {
@@ -196,10 +197,16 @@ std::size_t ViewerPage::write_page(const std::vector<ViewerRun>& runs, const Sto
     text += "]}";
     data += (i ? ",\n" : "\n") + text;
   }
-  data += "],\n\"equations\": " + equation_table_json() + "};\n";
+  // the page's own words in the run's language: the translation of each t("…") it has
+  const std::string page = viewer_page_html();
+  Json messages = Json::object();
+  for (const auto& [english, translated] : translations()) {
+    if (page.find("t(" + Json(english).dump()) != std::string::npos) messages[english] = translated;
+  }
+  data += "],\n\"equations\": " + equation_table_json() + ",\n\"lang\": \"" +
+          language_code(current_language()) + "\",\n\"messages\": " + messages.dump() + "};\n";
   renderer.finish();
   write_file_atomically(request_.out / "data.js", data);
-  const std::string page = viewer_page_html();
   write_file_atomically(request_.out / "index.html", page);  // last: the page is whole
   return data.size() + page.size();
 }
