@@ -62,5 +62,7 @@ TEST_SUITE("language") {
     CHECK(english_words("pgs2") == Words{"pgs2"});
     // one letter is a symbol, not a word; so is a letter after a digit (1e-4, 2D)
     CHECK(english_words("x, v, J, q = w + (x, y, z), 3D").empty());
+    // a subscript after "_" is part of its symbol (eq. 5-2's F_ext)
+    CHECK(english_words("F_ext = [m1 g, 0, 0, 0], λ_exp").empty());
   }
 }

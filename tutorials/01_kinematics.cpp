@@ -20,6 +20,7 @@
 #include "kinematics/particle.h"
 #include "kinematics/quaternion.h"
 #include "kinematics/rotation.h"
+#include "language/language.h"
 
 namespace {
 
@@ -86,7 +87,8 @@ class RotatingBox : public tutorial::Scene {
   void draw(render::Frame& frame) const override {
     const State s = state_at(step_ * dt);
     const double k = frame.velocity_scale = 0.5;  // m of arrow per m/s
-    frame.caption = "Ch 1 · A turning box: each particle moves at vᵢ = v + ω × rᵢ (eq. 1-30)";
+    frame.caption =
+        tr("Ch 1 · A turning box: each particle moves at vᵢ = v + ω × rᵢ (eq. 1-30)");
     render::Body box;
     box.centre = planar(s.x);
     box.angle = s.theta;
@@ -111,7 +113,7 @@ class RotatingBox : public tutorial::Scene {
                             render::palette::reddish_purple, render::Label::Align::centre});
     frame.panels.push_back(numbers_panel(s));
     frame.legend = {{render::LegendEntry::Sample::arrow, render::palette::vermillion,
-                     "particle velocity vᵢ = v + ω × rᵢ (1-30)"},
+                     tr("particle velocity vᵢ = v + ω × rᵢ (1-30)")},
                     {render::LegendEntry::Sample::arrow, render::palette::reddish_purple,
                      "ω × r₁ = Ṙ Rᵀ r₁ (1-28)"}};
   }
@@ -120,29 +122,31 @@ class RotatingBox : public tutorial::Scene {
     const State s = state_at(step_ * dt);
     tutorial::Explanation e;
     e.push_back(
-        {"Rotation about d by θ",
-         {{"θ", "", "angle turned, |ω| t", s.theta, "rad"},
-          {"d", "", "unit rotation axis", tutorial::json_of(axis), ""},
-          {"Skew(d)", "1-2", "cross-product matrix, Skew(d) r = d × r",
+        {tr("Rotation about d by θ"),
+         {{"θ", "", tr("angle turned, |ω| t"), s.theta, "rad"},
+          {"d", "", tr("unit rotation axis"), tutorial::json_of(axis), ""},
+          {"Skew(d)", "1-2", tr("cross-product matrix, Skew(d) r = d × r"),
            tutorial::json_of(skew(axis)), ""},
           {"R", "1-4", "Rodrigues: E + sinθ Skew(d) + (1 − cosθ) Skew(d)²",
            tutorial::json_of(s.rodrigues_R), ""},
           {"q", "1-19", "cos(θ/2) + d sin(θ/2)", tutorial::json_of(s.q), ""},
-          {"R(q)", "1-22", "the matrix of q; equals R", tutorial::json_of(s.quaternion_R), ""}}});
+          {"R(q)", "1-22", tr("the matrix of q; equals R"), tutorial::json_of(s.quaternion_R),
+           ""}}});
     e.push_back(
-        {"The body",
-         {{"x", "1-25", "centre of mass, x(0) + v t", tutorial::json_of(s.x), "m"},
-          {"v", "1-38", "linear velocity (P = m v)", tutorial::json_of(velocity), "m/s"},
-          {"ω", "1-27", "angular velocity, Skew(ω) = Ṙ Rᵀ", tutorial::json_of(s.omega), "rad/s"},
-          {"I(t)", "1-37", "world inertia R I(0) Rᵀ", tutorial::json_of(s.inertia), "kg·m²"},
-          {"L", "1-41", "angular momentum I ω",
+        {tr("The body"),
+         {{"x", "1-25", tr("centre of mass, x(0) + v t"), tutorial::json_of(s.x), "m"},
+          {"v", "1-38", tr("linear velocity (P = m v)"), tutorial::json_of(velocity), "m/s"},
+          {"ω", "1-27", tr("angular velocity, Skew(ω) = Ṙ Rᵀ"), tutorial::json_of(s.omega),
+           "rad/s"},
+          {"I(t)", "1-37", tr("world inertia R I(0) Rᵀ"), tutorial::json_of(s.inertia), "kg·m²"},
+          {"L", "1-41", tr("angular momentum I ω"),
            tutorial::json_of(angular_momentum(s.inertia, s.omega)), "kg·m²/s"},
-          {"E", "1-47", "kinetic energy ½ m vᵀv + ½ ωᵀ I ω", s.energy, "J"}}});
-    tutorial::Section corners{"Corner particles", {}};
+          {"E", "1-47", tr("kinetic energy ½ m vᵀv + ½ ωᵀ I ω"), s.energy, "J"}}});
+    tutorial::Section corners{tr("Corner particles"), {}};
     for (std::size_t i = 0; i < 4; ++i) {
       const std::string n = std::to_string(i + 1);
       corners.quantities.push_back(
-          {"r" + n, "1-24", "R rᵢ(0), from the centre", tutorial::json_of(s.r[i]), "m"});
+          {"r" + n, "1-24", tr("R rᵢ(0), from the centre"), tutorial::json_of(s.r[i]), "m"});
       corners.quantities.push_back(
           {"v" + n, "1-30", "v + ω × rᵢ", tutorial::json_of(s.corner_v[i]), "m/s"});
     }
@@ -154,7 +158,7 @@ class RotatingBox : public tutorial::Scene {
   static render::Panel numbers_panel(const State& s) {
     render::Panel panel;
     panel.corner = render::Corner::top_right;
-    panel.title = "The rotation in numbers";
+    panel.title = tr("The rotation in numbers");
     panel.lines.push_back("θ = " + fixed(s.theta) + " rad   d = (0, 0, 1)");
     panel.lines.push_back("R = E + sinθ Skew(d)");
     panel.lines.push_back("    + (1−cosθ) Skew(d)²   (1-4)");
@@ -167,8 +171,8 @@ class RotatingBox : public tutorial::Scene {
         tutorial::scientific((s.quaternion_R - s.rodrigues_R).cwiseAbs().maxCoeff()) + "  (1-22)");
     panel.lines.push_back("ω = " + fixed(s.omega, 2) + " rad/s");
     panel.lines.push_back("v = " + fixed(velocity, 2) + " m/s");
-    panel.lines.push_back("E = ½mvᵀv + ½ωᵀIω = " + fixed(s.energy, 2) + " J (1-47)");
-    panel.lines.push_back("arrows: 0.5 m per m/s");
+    panel.lines.push_back(fill(tr("E = ½mvᵀv + ½ωᵀIω = {0} J (1-47)"), {fixed(s.energy, 2)}));
+    panel.lines.push_back(tr("arrows: 0.5 m per m/s"));
     return panel;
   }
 

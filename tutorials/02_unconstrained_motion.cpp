@@ -19,6 +19,7 @@
 #include "ch2/forces_at_points.h"
 #include "ch2/spring.h"
 #include "kinematics/momentum.h"
+#include "language/language.h"
 #include "motion/integrator.h"
 
 namespace {
@@ -78,9 +79,9 @@ Run make_run(Integration scheme, const char* title, const char* rule, render::Co
 class ThrownBox : public tutorial::Scene {
  public:
   ThrownBox()
-      : runs_{make_run(Integration::explicit_euler, "explicit Euler", "x(t+Δt) = x + v(t) Δt",
+      : runs_{make_run(Integration::explicit_euler, tr("explicit Euler"), "x(t+Δt) = x + v(t) Δt",
                        render::palette::vermillion, launch),
-              make_run(Integration::semi_implicit, "semi-implicit Euler (eq. 2-5)",
+              make_run(Integration::semi_implicit, tr("semi-implicit Euler (eq. 2-5)"),
                        "x(t+Δt) = x + v(t+Δt) Δt", render::palette::bluish_green,
                        launch + Vec3(panel_offset, 0.0, 0.0))},
         initial_energy_(total_energy(runs_[0].at_t[0])) {
@@ -98,7 +99,8 @@ class ThrownBox : public tutorial::Scene {
   }
 
   void draw(render::Frame& frame) const override {
-    frame.caption = "Ch 2 · A thrown spinning box, eq. 2-3..2-8: explicit vs semi-implicit Euler";
+    frame.caption =
+        tr("Ch 2 · A thrown spinning box, eq. 2-3..2-8: explicit vs semi-implicit Euler");
     frame.velocity_scale = 0.12;
     const double t = step_ * dt;
     for (const Run& run : runs_) {
@@ -112,9 +114,10 @@ class ThrownBox : public tutorial::Scene {
     frame.paths.push_back(
         {{Vec2(divider, -1.6), Vec2(divider, 3.6)}, render::palette::grid, false});
     frame.legend = {
-        {render::LegendEntry::Sample::dashed_line, render::palette::grey, "exact: x₀ + v₀t + ½gt²"},
-        {render::LegendEntry::Sample::line, runs_[0].colour, "explicit Euler: centre's path"},
-        {render::LegendEntry::Sample::line, runs_[1].colour, "semi-implicit: centre's path"}};
+        {render::LegendEntry::Sample::dashed_line, render::palette::grey,
+         tr("exact: x₀ + v₀t + ½gt²")},
+        {render::LegendEntry::Sample::line, runs_[0].colour, tr("explicit Euler: centre's path")},
+        {render::LegendEntry::Sample::line, runs_[1].colour, tr("semi-implicit: centre's path")}};
     frame.legend_corner = render::Corner::bottom_left;
   }
 
@@ -128,12 +131,12 @@ class ThrownBox : public tutorial::Scene {
     tutorial::write_plot(
         folder,
         {"energy",
-         "Thrown box: total energy E = ½mvᵀv + ½ωᵀIω + mgy (eq. 1-47 + potential), Δt = 1/30 s",
+         tr("Thrown box: total energy E = ½mvᵀv + ½ωᵀIω + mgy (eq. 1-47 + potential), Δt = 1/30 s"),
          "t (s)",
          "E (J)",
-         {{"explicit Euler", runs_[0].colour, false},
-          {"semi-implicit Euler (eq. 2-5)", runs_[1].colour, false},
-          {"exact (constant)", render::palette::ink, true}},
+         {{tr("explicit Euler"), runs_[0].colour, false},
+          {tr("semi-implicit Euler (eq. 2-5)"), runs_[1].colour, false},
+          {tr("exact (constant)"), render::palette::ink, true}},
          energy_rows_});
   }
 
@@ -164,7 +167,7 @@ class ThrownBox : public tutorial::Scene {
         "v = " + fixed(b.v, 2) + " m/s",
         "E = " + fixed(total_energy(b), 3) + " J",
         "E − E₀ = " + fixed(drift, 3) + " J",
-        "½mg²Δt·t = " + fixed(predicted, 3) + " J (theory)",
+        fill(tr("½mg²Δt·t = {0} J (theory)"), {fixed(predicted, 3)}),
         "|x − x_exact| = " + fixed((b.x - exact_position(run.origin, t)).norm(), 3) + " m"};
     return panel;
   }
@@ -176,17 +179,18 @@ class ThrownBox : public tutorial::Scene {
     using tutorial::json_of;
     return {
         run.title,
-        {{"x(t)", "", "centre of mass at t", json_of(a.x), "m"},
-         {"v(t)", "", "velocity at t", json_of(a.v), "m/s"},
-         {"ω(t)", "", "angular velocity at t", json_of(a.angular_velocity), "rad/s"},
-         {"F", "5-2", "external force m g, the only force", json_of(Vec3(b.mass * gravity)), "N"},
+        {{"x(t)", "", tr("centre of mass at t"), json_of(a.x), "m"},
+         {"v(t)", "", tr("velocity at t"), json_of(a.v), "m/s"},
+         {"ω(t)", "", tr("angular velocity at t"), json_of(a.angular_velocity), "rad/s"},
+         {"F", "5-2", tr("external force m g, the only force"), json_of(Vec3(b.mass * gravity)),
+          "N"},
          {"v(t+Δt)", "2-3", "v + m⁻¹ F Δt", json_of(b.v), "m/s"},
          {"ω(t+Δt)", "2-4", "ω + I⁻¹ τ Δt (τ = 0)", json_of(b.angular_velocity), "rad/s"},
          {"x(t+Δt)", "2-5", run.rule, json_of(b.x), "m"},
-         {"q(t+Δt)", "2-6", "q + ½ ω̂ q Δt, renormalised", json_of(b.q), ""},
-         {"R", "2-7", "rotation matrix of q (eq. 1-22)", json_of(b.rotation), ""},
+         {"q(t+Δt)", "2-6", tr("q + ½ ω̂ q Δt, renormalised"), json_of(b.q), ""},
+         {"R", "2-7", tr("rotation matrix of q (eq. 1-22)"), json_of(b.rotation), ""},
          {"I(t+Δt)", "2-8", "R I(0) Rᵀ", json_of(b.inertia_world()), "kg·m²"},
-         {"E", "1-47", "kinetic energy + potential −m g·x", total_energy(b), "J"}}};
+         {"E", "1-47", tr("kinetic energy + potential −m g·x"), total_energy(b), "J"}}};
   }
 
   std::array<Run, 2> runs_;

@@ -30,6 +30,7 @@
 #include "ch4/friction_ramp.h"
 #include "ch4/gjk_epa.h"
 #include "contact/solvers.h"
+#include "language/language.h"
 
 namespace {
 
@@ -126,7 +127,7 @@ class TextVsPgs : public SideBySide {
  public:
   TextVsPgs()
       : SideBySide("text_vs_pgs",
-                   "Fig 4-2..4-5 · one landing, two solvers: text, the text's method (left); pgs (right)",
+                   tr("Fig 4-2..4-5 · one landing, two solvers: text, the text's method (left); pgs (right)"),
                    {"text", true, render::palette::blue, "text"},
                    {"pgs", true, render::palette::bluish_green, "pgs"}) {}
 
@@ -146,13 +147,13 @@ class TextVsPgs : public SideBySide {
       rows.push_back(row);
     }
     tutorial::write_plot(folder, {"penetration",
-                                  "Tilted box landing: its deepest corner below the ground",
+                                  tr("Tilted box landing: its deepest corner below the ground"),
                                   "t (s)",
-                                  "penetration (mm)",
-                                  {{"text, cache off", render::palette::vermillion, false},
-                                   {"pgs, cache on", render::palette::bluish_green, false},
-                                   {"text, cache on", render::palette::blue, false},
-                                   {"pgs's slop (left uncorrected)", render::palette::grey, true}},
+                                  tr("penetration (mm)"),
+                                  {{tr("text, cache off"), render::palette::vermillion, false},
+                                   {tr("pgs, cache on"), render::palette::bluish_green, false},
+                                   {tr("text, cache on"), render::palette::blue, false},
+                                   {tr("pgs's slop (left uncorrected)"), render::palette::grey, true}},
                                   rows,
                                   "top right"});
   }
@@ -178,9 +179,9 @@ int main(int argc, char** argv) {
        [](const tutorial::Options&) {
          return std::make_unique<SideBySide>(
              "cache_on_vs_off",
-             "Fig 4-2..4-5 · the same landing with the contact cache (left) and without",
-             Side{"text", true, render::palette::blue, "cache on"},
-             Side{"text", false, render::palette::vermillion, "cache off"});
+             tr("Fig 4-2..4-5 · the same landing with the contact cache (left) and without"),
+             Side{"text", true, render::palette::blue, tr("cache on")},
+             Side{"text", false, render::palette::vermillion, tr("cache off")});
        },
        tutorial::scene<TextVsPgs>(), ch4::friction_ramp_scene(), ch4::gjk_scene(),
        ch4::epa_scene()});

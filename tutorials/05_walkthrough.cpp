@@ -20,6 +20,7 @@
 #include "app/views/contact/world_view.h"
 #include "ch5/corner_inset.h"
 #include "contact/solvers.h"
+#include "language/language.h"
 
 namespace {
 
@@ -81,6 +82,16 @@ RowTags tags_of(long step, bool second) {
   return second ? RowTags{"5-16", "5-17", "5-18"} : RowTags{"5-13", "5-14", "5-15"};
 }
 
+// The contact's origin as the panel names it: origin_name's words, in the frame's language.
+const char* origin_text(ContactOrigin origin) {
+  switch (origin) {
+    case ContactOrigin::fresh: return tr("new");
+    case ContactOrigin::refound: return tr("refound");
+    case ContactOrigin::kept: return tr("kept");
+  }
+  return origin_name(origin);
+}
+
 class Walkthrough : public tutorial::Scene {
  public:
   explicit Walkthrough(const tutorial::Options& o)
@@ -97,7 +108,7 @@ class Walkthrough : public tutorial::Scene {
   void step() override { run_.step(); }
 
   void draw(render::Frame& frame) const override {
-    frame.caption = "Ch 5 walk-through · " + moment();
+    frame.caption = fill(tr("Ch 5 walk-through · {0}"), {moment()});
     frame.force_scale = 0.05;
     frame.grounds.push_back({Vec2::Zero(), Vec2::UnitY()});
     frame.bodies.push_back(
@@ -119,10 +130,10 @@ class Walkthrough : public tutorial::Scene {
   }
 
   tutorial::Explanation explain() const override {
-    return view::explain_world_step(run_.world(), run_.report(), {"box A", "ground B"});
+    return view::explain_world_step(run_.world(), run_.report(), {tr("box A"), tr("ground B")});
   }
   void record(tutorial::ViewerStep& step) const override {
-    step = view::viewer_step(run_.world(), run_.report(), {"box A", "ground B"});
+    step = view::viewer_step(run_.world(), run_.report(), {tr("box A"), tr("ground B")});
   }
 
   // normal_force.png: Σ λ over 2 s against m g.
@@ -138,11 +149,11 @@ class Walkthrough : public tutorial::Scene {
       rows.push_back({s * dt, wrench[1], wrench[5], weight});
     }
     tutorial::write_plot(folder, {"normal_force",
-                                  "Walk-through: the contact force on box A converges to m g",
+                                  tr("Walk-through: the contact force on box A converges to m g"),
                                   "t − τ (s)",
                                   "f_c1,y (N), τ_c1 (N·m)",
-                                  {{"f_c1,y = Σ λ_i N_y (eq. 5-9)", render::palette::blue, false},
-                                   {"τ_c1 (eq. 5-9)", render::palette::orange, false},
+                                  {{tr("f_c1,y = Σ λ_i N_y (eq. 5-9)"), render::palette::blue, false},
+                                   {tr("τ_c1 (eq. 5-9)"), render::palette::orange, false},
                                    {"m1 g", render::palette::ink, true}},
                                   rows});
   }
@@ -166,12 +177,12 @@ class Walkthrough : public tutorial::Scene {
 
   std::string moment() const {
     switch (step_index()) {
-      case 0: return "t = τ: one row, the deepest corner a (eq. 5-1..5-11)";
-      case 1: return "t = τ + Δt: a from the cache, b fresh, J is 2 × 12 (eq. 5-12..5-21)";
-      case 2: return "t = τ + 2Δt: both corners again (in 3D a third, Fig 5-3)";
+      case 0: return tr("t = τ: one row, the deepest corner a (eq. 5-1..5-11)");
+      case 1: return tr("t = τ + Δt: a from the cache, b fresh, J is 2 × 12 (eq. 5-12..5-21)");
+      case 2: return tr("t = τ + 2Δt: both corners again (in 3D a third, Fig 5-3)");
       default:
-        return resting() ? "t → ∞: f_c1 → m1 g, τ_c1 → 0 (each corner about m g / 2)"
-                         : "settling: both corners kept in the cache";
+        return resting() ? tr("t → ∞: f_c1 → m1 g, τ_c1 → 0 (each corner about m g / 2)")
+                         : tr("settling: both corners kept in the cache");
     }
   }
 
@@ -194,19 +205,19 @@ class Walkthrough : public tutorial::Scene {
     const Vec3 r(side * 0.5, -0.5, 0.0);
     const double height = (box().x + box().rotation * r).y();  // the corner's N·x, in m
     ch5::Inset view{Vec2(side * 0.55, 1.62), 0.3, 20.0,
-                    std::string(side < 0.0 ? "corner a" : "corner b") + " ×20", {}};
+                    std::string(side < 0.0 ? tr("corner a") : tr("corner b")) + " ×20", {}};
     const int i = contact_at(side);
     if (i >= 0) {
       const ContactInfo c = contacts()[static_cast<std::size_t>(i)];
       view.lines[0] = "ε = " + fixed(std::min(c.separation, 0.0), 4) + " m";
-      view.lines[1] = c.origin == ContactOrigin::kept      ? "kept (eq. 5-12)"
-                      : c.origin == ContactOrigin::refound ? "re-found: the deepest"
-                                                           : "new: the deepest";
+      view.lines[1] = c.origin == ContactOrigin::kept      ? tr("kept (eq. 5-12)")
+                      : c.origin == ContactOrigin::refound ? tr("re-found: the deepest")
+                                                           : tr("new: the deepest");
       ch5::draw_inset(frame, view, box(), r, &c.point);
       return;
     }
-    view.lines[0] = height < 0.0 ? "N·x = " + fixed(height, 4) + " m" : "no contact";
-    view.lines[1] = height < 0.0 ? "in, but not the deepest" : "";
+    view.lines[0] = height < 0.0 ? "N·x = " + fixed(height, 4) + " m" : tr("no contact");
+    view.lines[1] = height < 0.0 ? tr("in, but not the deepest") : "";
     ch5::draw_inset(frame, view, box(), r, nullptr);
   }
 
@@ -226,8 +237,9 @@ class Walkthrough : public tutorial::Scene {
     const bool at_tau = step_index() == 0;
     render::Panel p;
     p.corner = render::Corner::top_left;
-    p.title = "step " + std::to_string(step_index()) + " · solver " + solver_ + ": s = " + counted(rows, "row", "rows") +
-              ", J is " + std::to_string(rows) + " × 12 (" + (at_tau ? "5-11" : "5-19") + ")";
+    p.title = fill(tr("step {0} · solver {1}: s = {2}, J is {3} × 12 ({4})"),
+                   {std::to_string(step_index()), solver_, counted(rows, tr("row"), tr("rows")),
+                    std::to_string(rows), at_tau ? "5-11" : "5-19"});
     p.lines = {"M⁻¹ = diag(m1⁻¹E, I1⁻¹, 0, 0): m1⁻¹ = " + fixed(box().inverse_mass, 1) +
                    ", I1⁻¹ = " + fixed(box().inverse_inertia_world(2, 2), 1) + "  (5-1)",
                "F_ext = [m1 g, 0, 0, 0], m1 g = " +
@@ -242,7 +254,7 @@ class Walkthrough : public tutorial::Scene {
       const double epsilon = std::min(c.separation, 0.0);
       // eq. 5-4: v_a = v1 + ω1 × (x_a − x1), the corner's velocity at t
       const Vec3 v = box().v + box().angular_velocity.cross(corner(i) - box().x);
-      p.lines.push_back(n + " " + origin_name(c.origin) + ": x_" + n + " = " +
+      p.lines.push_back(n + " " + origin_text(c.origin) + ": x_" + n + " = " +
                         pair_text(corner(i), 4) + ", r_" + n + " = " + pair_text(anchor(i), 2) +
                         "  (5-12)");
       p.lines.push_back("  N·v_" + n + " = " + fixed(N.dot(v), 4) + " m/s (5-4, 5-5), ε = " +
@@ -255,11 +267,11 @@ class Walkthrough : public tutorial::Scene {
                         (at_tau ? "5-9" : "5-21") + ")");
     }
     if (at_tau) {
-      p.lines.push_back("  eq. 5-7 read literally (ζ as m/s): λ = " + fixed(literal_, 4) + " N");
+      p.lines.push_back(fill(tr("  eq. 5-7 read literally (ζ as m/s): λ = {0} N"), {fixed(literal_, 4)}));
     }
     p.lines.push_back("f_c1 = " + pair_text(Vec3(wrench.head<3>()), 4) + " N, τ_c1 = " +
                       fixed(wrench[5], 4) + " N·m  (5-9)");
-    p.lines.push_back("text: z up, N = (0, 0, 1); Lamina: y up, N = (0, 1, 0)");
+    p.lines.push_back(tr("text: z up, N = (0, 0, 1); Lamina: y up, N = (0, 1, 0)"));
     return p;
   }
 

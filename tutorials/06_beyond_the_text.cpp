@@ -18,6 +18,7 @@
 #include "ch6/lab.h"
 #include "ch6/overlay.h"
 #include "ch6/sweeps.h"
+#include "language/language.h"
 
 namespace {
 
@@ -32,17 +33,18 @@ class Table : public tutorial::Scene {
   void step() override {}
 
   void draw(render::Frame& frame) const override {
-    frame.caption = "Chapter 6 · who holds what: 60 Hz, 10 s, no sleeping (✓: the bars of islands hold)";
+    frame.caption = tr("Chapter 6 · who holds what: 60 Hz, 10 s, no sleeping (✓: the bars of islands hold)");
     render::Panel table;
     table.corner = render::Corner::top_left;
-    table.title = "Box2D 2.4.1 (8 / 3 iterations, block solver) and Lamina's methods";
+    table.title = tr("Box2D 2.4.1 (8 / 3 iterations, block solver) and Lamina's methods");
     table.lines = ch6::table_lines();
     frame.panels.push_back(table);
     render::Panel bars;
     bars.corner = render::Corner::bottom_left;
-    bars.title = "each column: what it measures; ✓ when";
+    bars.title = tr("each column: what it measures; ✓ when");
     for (const ch6::TableScene& s : ch6::table_scenes()) {
-      bars.lines.push_back(s.scene + ": " + s.measure + "; " + ch6::bars(s));
+      bars.lines.push_back(ch6::scene_title(s.scene) + ": " + ch6::shown(s.measure) + "; " +
+                           ch6::shown(ch6::bars(s)));
     }
     frame.panels.push_back(bars);
   }
@@ -64,11 +66,11 @@ int main(int argc, char** argv) {
       {render::Overlay::contacts, render::Overlay::forces}};
   std::vector<tutorial::SceneFactory> scenes = {tutorial::scene<Table>()};
   for (const ch6::TableScene& s : ch6::table_scenes()) {
-    scenes.push_back(ch6::overlay_scene(ch6::table_comparison(s)));
+    scenes.push_back(ch6::overlay_scene([s] { return ch6::table_comparison(s); }));
   }
   scenes.push_back(ch6::sweeps_scene());
   for (const ch6::PitfallDemo& d : ch6::pitfall_demos()) {
-    scenes.push_back(ch6::overlay_scene(ch6::pitfall_comparison(d)));
+    scenes.push_back(ch6::overlay_scene([d] { return ch6::pitfall_comparison(d); }));
   }
   return tutorial::run_tutorial(argc, argv, info, scenes);
 }

@@ -108,7 +108,10 @@ std::vector<std::string> english_words(std::string_view text) {
   const auto latin = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); };
   std::size_t i = 0;
   while (i < text.size()) {
-    if (!latin(text[i]) || (i > 0 && (std::isalnum(static_cast<unsigned char>(text[i - 1])) != 0))) {
+    // a word starts a run of letters; one after a letter, a digit or "_" is a symbol's part
+    // (Box2D's "D", 1e-4's "e", F_ext's "ext")
+    if (!latin(text[i]) ||
+        (i > 0 && (std::isalnum(static_cast<unsigned char>(text[i - 1])) != 0 || text[i - 1] == '_'))) {
       ++i;
       continue;
     }

@@ -54,7 +54,8 @@ std::string fill(std::string_view pattern, std::initializer_list<std::string_vie
 // ko`): runs of two or more Latin letters, with the hyphens and digits that join them
 // ("soft-step", "Box2D"), that are neither a unit (m/s, rad, kg), a function of the equations
 // (sin, max, Skew), nor a name the Korean keeps as it is (PGS, MLCP, Lemke, Box2D, Lamina, the
-// solvers' names). One letter is a symbol (x, v, J), never a word.
+// solvers' names). One letter is a symbol (x, v, J), never a word, and so is a subscript
+// (F_ext, λ_exp).
 std::vector<std::string> english_words(std::string_view text);
 
 }  // namespace lamina

@@ -5,6 +5,7 @@
 #include "app/harness/format.h"
 #include "app/harness/sketch3d.h"
 #include "kinematics/rotation.h"
+#include "language/language.h"
 
 namespace lamina::ch1 {
 namespace {
@@ -46,7 +47,8 @@ class RodriguesFrame : public tutorial::Scene {
     const double theta = theta_now();
     const Vec3 turned = rodrigues(d, theta) * v;  // eq. 1-4
     const Vec3 centre = v_along_d * d;            // the circle's centre on the axis
-    frame.caption = "Ch 1 · Fig 1-1: v turned by θ about d, in the frame a, b, d (eq. 1-4, 1-6)";
+    frame.caption =
+        tr("Ch 1 · Fig 1-1: v turned by θ about d, in the frame a, b, d (eq. 1-4, 1-6)");
     frame.paths3.push_back({{-0.4 * d, 2.5 * d}, grey, true});  // the axis
     frame.paths3.push_back({arc(centre, a, b, v_along_a, 2 * M_PI), grey, false});
     frame.paths3.push_back({{centre, v}, grey, true});
@@ -63,11 +65,12 @@ class RodriguesFrame : public tutorial::Scene {
     frame.arrows3.push_back({Vec3::Zero(), v, blue, one_tip ? "v, R v" : "v"});
     frame.arrows3.push_back({Vec3::Zero(), turned, vermillion, one_tip ? "" : "R v"});
     frame.points3.push_back({centre, ink, ""});
-    frame.legend = {{render::LegendEntry::Sample::arrow, ink, "a, b, d: orthonormal, d the axis"},
-                    {render::LegendEntry::Sample::arrow, blue, "v"},
-                    {render::LegendEntry::Sample::arrow, vermillion, "R v, turned by θ about d"},
-                    {render::LegendEntry::Sample::line, grey, "the circle v's tip turns on"},
-                    {render::LegendEntry::Sample::point, ink, "its centre (d·v) d, on the axis"}};
+    frame.legend = {
+        {render::LegendEntry::Sample::arrow, ink, tr("a, b, d: orthonormal, d the axis")},
+        {render::LegendEntry::Sample::arrow, blue, "v"},
+        {render::LegendEntry::Sample::arrow, vermillion, tr("R v, turned by θ about d")},
+        {render::LegendEntry::Sample::line, grey, tr("the circle v's tip turns on")},
+        {render::LegendEntry::Sample::point, ink, tr("its centre (d·v) d, on the axis")}};
     draw_world_axes(frame, Vec3(-2.0, -0.9, 0.0), 0.6);
     frame.legend_corner = render::Corner::bottom_right;
     frame.panels.push_back(numbers_panel(theta, turned));
@@ -76,16 +79,16 @@ class RodriguesFrame : public tutorial::Scene {
   tutorial::Explanation explain() const override {
     const double theta = theta_now();
     const Mat3 r = rodrigues(d, theta);
-    return {{"The frame a, b, d",
-             {{"d", "", "unit rotation axis", json_of(d), ""},
-              {"a", "", "unit, across d", json_of(a), ""},
-              {"b", "", "d × a, so that [a b d] is a rotation", json_of(b), ""},
-              {"θ", "", "angle turned, θ = (π/2 rad/s) t", theta, "rad"}}},
-            {"The rotation",
+    return {{tr("The frame a, b, d"),
+             {{"d", "", tr("unit rotation axis"), json_of(d), ""},
+              {"a", "", tr("unit, across d"), json_of(a), ""},
+              {"b", "", tr("d × a, so that [a b d] is a rotation"), json_of(b), ""},
+              {"θ", "", tr("angle turned, θ = (π/2 rad/s) t"), theta, "rad"}}},
+            {tr("The rotation"),
              {{"R", "1-4", "E + sinθ Skew(d) + (1 − cosθ) Skew(d)²", json_of(r), ""},
               {"R", "1-6", "[a b d] Rz(θ) [a b d]ᵀ", json_of(rotation_in_frame(theta)), ""},
               {"v", "1-9", "(a·v) a + (b·v) b + (d·v) d", json_of(v), ""},
-              {"R v", "1-4", "v turned by θ about d", json_of(Vec3(r * v)), ""}}}};
+              {"R v", "1-4", tr("v turned by θ about d"), json_of(Vec3(r * v)), ""}}}};
   }
 
  private:
@@ -95,7 +98,7 @@ class RodriguesFrame : public tutorial::Scene {
     const double gap = (rotation_in_frame(theta) - rodrigues(d, theta)).cwiseAbs().maxCoeff();
     render::Panel panel;
     panel.corner = render::Corner::top_right;
-    panel.title = "Rodrigues in numbers";
+    panel.title = tr("Rodrigues in numbers");
     panel.lines = {"θ = " + fixed(theta) + " rad",
                    "d = " + fixed(d),
                    "a = " + fixed(a),

@@ -7,6 +7,7 @@
 #include "app/harness/sketch3d.h"
 #include "kinematics/particle.h"
 #include "kinematics/rotation.h"
+#include "language/language.h"
 
 namespace lamina::ch1 {
 namespace {
@@ -82,7 +83,8 @@ class TurningParticle : public tutorial::Scene {
   void draw(render::Frame& frame) const override {
     using namespace render::palette;
     const State s = state_at(step_ * dt);
-    frame.caption = "Ch 1 · Fig 1-2, 1-3: ṙᵢ = ω × rᵢ, |ṙᵢ| = |sin α| |rᵢ| |ω| (eq. 1-27, 1-28)";
+    frame.caption =
+        tr("Ch 1 · Fig 1-2, 1-3: ṙᵢ = ω × rᵢ, |ṙᵢ| = |sin α| |rᵢ| |ω| (eq. 1-27, 1-28)");
     for (const std::vector<Vec3>& edge : box_edges(s.rotation)) {
       frame.paths3.push_back({edge, tint(grey, 0.6), false});
     }
@@ -103,32 +105,32 @@ class TurningParticle : public tutorial::Scene {
     frame.points3.push_back({Vec3::Zero(), ink, "x"});
     frame.points3.push_back({s.r, blue, ""});
     frame.legend = {
-        {render::LegendEntry::Sample::arrow, ink, "ω: the body turns about ω/|ω| at |ω|"},
-        {render::LegendEntry::Sample::arrow, blue, "particle rᵢ = R(t) rᵢ(0) (1-24)"},
+        {render::LegendEntry::Sample::arrow, ink, tr("ω: the body turns about ω/|ω| at |ω|")},
+        {render::LegendEntry::Sample::arrow, blue, tr("particle rᵢ = R(t) rᵢ(0) (1-24)")},
         {render::LegendEntry::Sample::arrow, vermillion, "ṙᵢ = ω × rᵢ (1-28)"},
-        {render::LegendEntry::Sample::line, sky_blue, "the circle rᵢ runs on, about the axis"},
-        {render::LegendEntry::Sample::dashed_line, grey, "its radius |rᵢ| sin α"}};
+        {render::LegendEntry::Sample::line, sky_blue, tr("the circle rᵢ runs on, about the axis")},
+        {render::LegendEntry::Sample::dashed_line, grey, tr("its radius |rᵢ| sin α")}};
     draw_world_axes(frame, Vec3(-1.8, -1.0, 0.0), 0.5);
     frame.panels.push_back(numbers_panel(s));
   }
 
   tutorial::Explanation explain() const override {
     const State s = state_at(step_ * dt);
-    return {{"A particle of the turning body",
-             {{"ω", "1-27", "angular velocity, Skew(ω) = Ṙ Rᵀ", json_of(omega), "rad/s"},
-              {"R", "1-4", "rotation by |ω| t about ω/|ω|", json_of(s.rotation), ""},
-              {"rᵢ", "1-24", "R(t) rᵢ(0), from the centre of mass", json_of(s.r), "m"},
-              {"α", "", "angle between ω and rᵢ", s.alpha, "rad"},
+    return {{tr("A particle of the turning body"),
+             {{"ω", "1-27", tr("angular velocity, Skew(ω) = Ṙ Rᵀ"), json_of(omega), "rad/s"},
+              {"R", "1-4", tr("rotation by |ω| t about ω/|ω|"), json_of(s.rotation), ""},
+              {"rᵢ", "1-24", tr("R(t) rᵢ(0), from the centre of mass"), json_of(s.r), "m"},
+              {"α", "", tr("angle between ω and rᵢ"), s.alpha, "rad"},
               {"ṙᵢ", "1-28", "ω × rᵢ", json_of(s.r_dot), "m/s"},
               {"|ṙᵢ|", "", "|ω × rᵢ|", s.r_dot.norm(), "m/s"},
-              {"|sin α| |rᵢ| |ω|", "", "the same speed, from α", s.speed, "m/s"}}}};
+              {"|sin α| |rᵢ| |ω|", "", tr("the same speed, from α"), s.speed, "m/s"}}}};
   }
 
  private:
   static render::Panel numbers_panel(const State& s) {
     render::Panel panel;
     panel.corner = render::Corner::top_right;
-    panel.title = "The particle in numbers";
+    panel.title = tr("The particle in numbers");
     panel.lines = {"ω = " + fixed(omega) + " rad/s",
                    "rᵢ = R(t) rᵢ(0) = " + fixed(s.r) + " m  (1-24)",
                    "α = ∠(ω, rᵢ) = " + fixed(s.alpha) + " rad",
@@ -136,9 +138,9 @@ class TurningParticle : public tutorial::Scene {
                    "|ṙᵢ| = " + fixed(s.r_dot.norm()) + " m/s",
                    "|sin α| |rᵢ| |ω| = " + fixed(s.speed) + " m/s",
                    "max|Ṙ Rᵀ − Skew(ω)| = " + tutorial::scientific(s.skew_error) + "  (1-27)",
-                   "  (Ṙ by central difference, h = 1e-4 s)",
-                   "arrows: ω " + fixed(omega_scale, 1) + " m per rad/s, ṙ " +
-                       fixed(velocity_scale, 1) + " m per m/s"};
+                   tr("  (Ṙ by central difference, h = 1e-4 s)"),
+                   fill(tr("arrows: ω {0} m per rad/s, ṙ {1} m per m/s"),
+                        {fixed(omega_scale, 1), fixed(velocity_scale, 1)})};
     return panel;
   }
 

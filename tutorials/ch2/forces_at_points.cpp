@@ -7,6 +7,7 @@
 #include "app/views/motion/body_view.h"
 #include "kinematics/particle.h"
 #include "kinematics/wrench.h"
+#include "language/language.h"
 #include "motion/integrator.h"
 
 namespace lamina::ch2 {
@@ -68,8 +69,8 @@ class ForcesAtPoints : public tutorial::Scene {
   void draw(render::Frame& frame) const override {
     using namespace render::palette;
     frame.caption =
-        "Ch 2 · Fig 2-1: forces at points add up to F = ΣFᵢ, τ = Σ(xᵢ − x) × Fᵢ "
-        "(eq. 1-31..1-33)";
+        tr("Ch 2 · Fig 2-1: forces at points add up to F = ΣFᵢ, τ = Σ(xᵢ − x) × Fᵢ "
+           "(eq. 1-31..1-33)");
     frame.paths.push_back({trail_, grey, false});
     frame.bodies.push_back(view::box_view(at_t_, half_extents, tint(sky_blue, 0.35)));
     const Vec3& x = at_t_.x;
@@ -87,11 +88,12 @@ class ForcesAtPoints : public tutorial::Scene {
     frame.arrows3.push_back({x, x + force_scale * at_t_.force, bluish_green, "F = ΣFᵢ"});
     frame.arrows3.push_back({x, x + torque_scale * at_t_.torque, reddish_purple, "τ"});
     frame.legend = {
-        {render::LegendEntry::Sample::arrow, vermillion, "Fᵢ applied at xᵢ"},
-        {render::LegendEntry::Sample::dashed_line, grey, "lever arm xᵢ − x"},
-        {render::LegendEntry::Sample::arrow, bluish_green, "F = ΣFᵢ (1-31), drawn at x"},
-        {render::LegendEntry::Sample::arrow, reddish_purple, "τ = Σ(xᵢ − x) × Fᵢ (1-33), along z"},
-        {render::LegendEntry::Sample::line, grey, "path of x"}};
+        {render::LegendEntry::Sample::arrow, vermillion, tr("Fᵢ applied at xᵢ")},
+        {render::LegendEntry::Sample::dashed_line, grey, tr("lever arm xᵢ − x")},
+        {render::LegendEntry::Sample::arrow, bluish_green, tr("F = ΣFᵢ (1-31), drawn at x")},
+        {render::LegendEntry::Sample::arrow, reddish_purple,
+         tr("τ = Σ(xᵢ − x) × Fᵢ (1-33), along z")},
+        {render::LegendEntry::Sample::line, grey, tr("path of x")}};
     tutorial::draw_world_axes(frame, Vec3(1.45, -1.0, 0.0), 0.5);
     frame.legend_corner = render::Corner::bottom_left;
     frame.panels.push_back(numbers_panel());
@@ -101,14 +103,14 @@ class ForcesAtPoints : public tutorial::Scene {
     tutorial::Explanation e;
     for (const AppliedForce& f : applied) {
       const std::string i = f.name;
-      e.push_back(
-          {std::string("Force ") + f.name,
-           {{"x" + i, "1-25", "x + R rᵢ(0), where it is applied", json_of(point_of(at_t_, f)), "m"},
-            {"F" + i, "", "the force", json_of(f.force), "N"},
-            {"τ" + i, "1-32", "(xᵢ − x) × Fᵢ", json_of(torque_of(at_t_, f)), "N·m"}}});
+      e.push_back({fill(tr("Force {0}"), {f.name}),
+                   {{"x" + i, "1-25", tr("x + R rᵢ(0), where it is applied"),
+                     json_of(point_of(at_t_, f)), "m"},
+                    {"F" + i, "", tr("the force"), json_of(f.force), "N"},
+                    {"τ" + i, "1-32", "(xᵢ − x) × Fᵢ", json_of(torque_of(at_t_, f)), "N·m"}}});
     }
-    e.push_back({"The body",
-                 {{"x(t)", "", "centre of mass at t", json_of(at_t_.x), "m"},
+    e.push_back({tr("The body"),
+                 {{"x(t)", "", tr("centre of mass at t"), json_of(at_t_.x), "m"},
                   {"F", "1-31", "Σ Fᵢ", json_of(at_t_.force), "N"},
                   {"τ", "1-33", "Σ (xᵢ − x) × Fᵢ", json_of(at_t_.torque), "N·m"},
                   {"v(t+Δt)", "2-3", "v + m⁻¹ F Δt", json_of(body_.v), "m/s"},
@@ -121,21 +123,22 @@ class ForcesAtPoints : public tutorial::Scene {
   render::Panel numbers_panel() const {
     render::Panel panel;
     panel.corner = render::Corner::top_left;
-    panel.title = "The forces in numbers (m = " + fixed(at_t_.mass, 1) + " kg)";
+    panel.title = fill(tr("The forces in numbers (m = {0} kg)"), {fixed(at_t_.mass, 1)});
     for (const AppliedForce& f : applied) {
       const std::string i = f.name;
-      panel.lines.push_back("F" + i + " = " + fixed(f.force, 2) + " N at x" + i +
-                            " − x = " + fixed(Vec3(point_of(at_t_, f) - at_t_.x), 2) + " m");
+      panel.lines.push_back(
+          fill(tr("F{0} = {1} N at x{0} − x = {2} m"),
+               {i, fixed(f.force, 2), fixed(Vec3(point_of(at_t_, f) - at_t_.x), 2)}));
       panel.lines.push_back("   (x" + i + " − x) × F" + i + " = " + fixed(torque_of(at_t_, f), 2) +
                             " N·m  (1-32)");
     }
     panel.lines.push_back("F = ΣFᵢ = " + fixed(at_t_.force, 2) + " N  (1-31)");
     panel.lines.push_back("τ = Σ(xᵢ − x) × Fᵢ = " + fixed(at_t_.torque, 2) + " N·m  (1-33)");
-    panel.lines.push_back("v = " + fixed(at_t_.v, 2) + " m/s, then v + m⁻¹F Δt  (2-3)");
-    panel.lines.push_back("ω = " + fixed(at_t_.angular_velocity, 2) +
-                          " rad/s, then ω + I⁻¹τ Δt  (2-4)");
-    panel.lines.push_back("arrows: " + fixed(force_scale, 1) + " m per N, " +
-                          fixed(torque_scale, 1) + " m per N·m");
+    panel.lines.push_back(fill(tr("v = {0} m/s, then v + m⁻¹F Δt  (2-3)"), {fixed(at_t_.v, 2)}));
+    panel.lines.push_back(fill(tr("ω = {0} rad/s, then ω + I⁻¹τ Δt  (2-4)"),
+                               {fixed(at_t_.angular_velocity, 2)}));
+    panel.lines.push_back(fill(tr("arrows: {0} m per N, {1} m per N·m"),
+                               {fixed(force_scale, 1), fixed(torque_scale, 1)}));
     return panel;
   }
 

@@ -7,6 +7,7 @@
 #include "app/harness/format.h"
 #include "app/harness/plot.h"
 #include "kinematics/momentum.h"
+#include "language/language.h"
 #include "motion/integrator.h"
 
 namespace lamina::ch2 {
@@ -86,9 +87,9 @@ std::vector<Vec2> spring_path(const Vec2& top, const Vec2& bottom) {
 class Spring : public tutorial::Scene {
  public:
   Spring()
-      : runs_{make_run(Integration::explicit_euler, "explicit Euler", "x(t+Δt) = x + v(t) Δt",
+      : runs_{make_run(Integration::explicit_euler, tr("explicit Euler"), "x(t+Δt) = x + v(t) Δt",
                        render::palette::vermillion, Vec3::Zero()),
-              make_run(Integration::semi_implicit, "semi-implicit Euler (eq. 2-5)",
+              make_run(Integration::semi_implicit, tr("semi-implicit Euler (eq. 2-5)"),
                        "x(t+Δt) = x + v(t+Δt) Δt", render::palette::bluish_green,
                        Vec3(panel_offset, 0.0, 0.0))},
         initial_energy_(runs_[0].energy(runs_[0].at_t)) {
@@ -110,7 +111,7 @@ class Spring : public tutorial::Scene {
   void draw(render::Frame& frame) const override {
     using namespace render::palette;
     frame.caption =
-        "Ch 2 · A spring: explicit Euler multiplies E by 1 + ω²Δt² a step, eq. 2-5 keeps it";
+        tr("Ch 2 · A spring: explicit Euler multiplies E by 1 + ω²Δt² a step, eq. 2-5 keeps it");
     for (const Run& run : runs_) {
       const Vec2 rest = run.rest.head<2>(), x = run.at_t.x.head<2>();
       const Vec2 top = rest + Vec2(0.0, ceiling_height);
@@ -138,10 +139,12 @@ class Spring : public tutorial::Scene {
     }
     for (double side : {1.0, -1.0}) frame.paths.push_back({envelope(side), ink, true});
     frame.legend = {
-        {render::LegendEntry::Sample::dashed_line, grey, "exact: y₀ cos ωt"},
-        {render::LegendEntry::Sample::dashed_line, ink, "±y₀ (1 + ω²Δt²)^(n/2), from E's growth"},
-        {render::LegendEntry::Sample::line, runs_[0].colour, "explicit: height against t"},
-        {render::LegendEntry::Sample::line, runs_[1].colour, "semi-implicit: height against t"}};
+        {render::LegendEntry::Sample::dashed_line, grey, tr("exact: y₀ cos ωt")},
+        {render::LegendEntry::Sample::dashed_line, ink,
+         tr("±y₀ (1 + ω²Δt²)^(n/2), from E's growth")},
+        {render::LegendEntry::Sample::line, runs_[0].colour, tr("explicit: height against t")},
+        {render::LegendEntry::Sample::line, runs_[1].colour,
+         tr("semi-implicit: height against t")}};
     frame.legend_corner = render::Corner::top_right;
   }
 
@@ -151,13 +154,13 @@ class Spring : public tutorial::Scene {
       const RigidBody& a = run.at_t;
       const RigidBody& b = run.body;
       e.push_back({run.title,
-                   {{"x(t)", "", "centre of the disc at t", json_of(a.x), "m"},
-                    {"v(t)", "", "velocity at t", json_of(a.v), "m/s"},
-                    {"F", "", "spring force −k (x − x_rest)",
+                   {{"x(t)", "", tr("centre of the disc at t"), json_of(a.x), "m"},
+                    {"v(t)", "", tr("velocity at t"), json_of(a.v), "m/s"},
+                    {"F", "", tr("spring force −k (x − x_rest)"),
                      json_of(Vec3(-run.stiffness() * (a.x - run.rest))), "N"},
                     {"v(t+Δt)", "2-3", "v + m⁻¹ F Δt", json_of(b.v), "m/s"},
                     {"x(t+Δt)", "2-5", run.rule, json_of(b.x), "m"},
-                    {"E/E₀", "1-47", "(½ m vᵀv + ½ k |x − x_rest|²) / E(0), at t + Δt",
+                    {"E/E₀", "1-47", tr("(½ m vᵀv + ½ k |x − x_rest|²) / E(0), at t + Δt"),
                      run.energy(b) / initial_energy_, ""}}});
     }
     return e;
@@ -166,11 +169,11 @@ class Spring : public tutorial::Scene {
   void write_data(const std::filesystem::path& folder) const override {
     tutorial::write_plot(
         folder, {"spring_energy",
-                 "Spring, ω = 2π rad/s, Δt = 1/60 s: energy E/E₀ (eq. 1-47 + ½k|x − x_rest|²)",
+                 tr("Spring, ω = 2π rad/s, Δt = 1/60 s: energy E/E₀ (eq. 1-47 + ½k|x − x_rest|²)"),
                  "t (s)",
                  "E/E₀",
-                 {{"explicit Euler", runs_[0].colour, false},
-                  {"semi-implicit Euler (eq. 2-5)", runs_[1].colour, false},
+                 {{tr("explicit Euler"), runs_[0].colour, false},
+                  {tr("semi-implicit Euler (eq. 2-5)"), runs_[1].colour, false},
                   {"(1 + ω²Δt²)ⁿ, n = t/Δt", render::palette::ink, true}},
                  energy_rows_});
   }
@@ -218,10 +221,11 @@ class Spring : public tutorial::Scene {
       panel.lines.push_back("(1 + ω²Δt²)ⁿ = " + fixed(std::pow(growth_per_step, step_), 4) +
                             ", n = " + std::to_string(step_));
     } else {
-      panel.lines.push_back("largest |E/E₀ − 1| = " + fixed(run.largest_drift, 4));
-      panel.lines.push_back("bound ωΔt = " + fixed(frequency * dt, 4));
+      panel.lines.push_back(fill(tr("largest |E/E₀ − 1| = {0}"), {fixed(run.largest_drift, 4)}));
+      panel.lines.push_back(fill(tr("bound ωΔt = {0}"), {fixed(frequency * dt, 4)}));
     }
-    panel.lines.push_back("height − rest = " + fixed(run.at_t.x.y() - run.rest.y(), 3) + " m");
+    panel.lines.push_back(
+        fill(tr("height − rest = {0} m"), {fixed(run.at_t.x.y() - run.rest.y(), 3)}));
     return panel;
   }
 

@@ -10,6 +10,7 @@
 #include "ch3/sign_diagram.h"
 #include "constraints/angle_limit.h"
 #include "constraints/revolute_joint.h"
+#include "language/language.h"
 
 namespace lamina::ch3 {
 namespace {
@@ -24,7 +25,8 @@ class AngleLimitScene : public tutorial::Scene {
  public:
   AngleLimitScene()
       : diagram_(Vec2(2.5, -0.7), Vec2(2.3, 1.55), {120.0, 20.0, "λ (N·m)"},
-                 {8000.0, 2000.0, "W (rad/s²)"}, "angle-limit row", SignDiagram::Caption::below) {
+                 {8000.0, 2000.0, "W (rad/s²)"}, tr("angle-limit row"),
+                 SignDiagram::Caption::below) {
     // the bar level, pointing along +x from the pin: θ = 0
     const Vec3 centre = hinge + Vec3(bar_half.x(), 0.0, 0.0);
     s_.bodies.push_back(box_body(bar_density, bar_half.x(), bar_half.y(), centre));
@@ -49,7 +51,7 @@ class AngleLimitScene : public tutorial::Scene {
 
   void draw(render::Frame& frame) const override {
     frame.caption =
-        "Ch 3 · A hinge with an angle limit, θ − θ_L ≥ 0: an inequality row (eq. 3-17..3-22)";
+        tr("Ch 3 · A hinge with an angle limit, θ − θ_L ≥ 0: an inequality row (eq. 3-17..3-22)");
     const Vec2 pivot = planar(hinge), ray(std::cos(limit), std::sin(limit));
     frame.paths.push_back({{pivot, pivot + limit_ray * ray}, vermillion, true});
     frame.labels.push_back(
@@ -61,23 +63,28 @@ class AngleLimitScene : public tutorial::Scene {
     frame.joints.push_back(*view::joint_view(s_.at_t, *s_.constraints[0]));
     diagram_.draw(frame);
     frame.panels.push_back(panel());
-    frame.legend = {
-        {render::LegendEntry::Sample::dashed_line, vermillion, "the limit θ = θ_L = −π/2 − 0.5 rad"},
-        {render::LegendEntry::Sample::dashed_line, grey, "hanging, θ = −π/2"},
-        {render::LegendEntry::Sample::line, tint(bluish_green, 0.6), "path of the bar's free end"},
-        {render::LegendEntry::Sample::swatch, reddish_purple,
-         "(λ, W) of this step; the dots: the steps before"}};
+    frame.legend = {{render::LegendEntry::Sample::dashed_line, vermillion,
+                     tr("the limit θ = θ_L = −π/2 − 0.5 rad")},
+                    {render::LegendEntry::Sample::dashed_line, grey, tr("hanging, θ = −π/2")},
+                    {render::LegendEntry::Sample::line, tint(bluish_green, 0.6),
+                     tr("path of the bar's free end")},
+                    {render::LegendEntry::Sample::swatch, reddish_purple,
+                     tr("(λ, W) of this step; the dots: the steps before")}};
     frame.legend_corner = render::Corner::bottom_left;
   }
 
-  tutorial::Explanation explain() const override { return explain_system(s_, "Angle limit", rows); }
-  void record(tutorial::ViewerStep& step) const override { record_system(s_, rows, step); }
+  tutorial::Explanation explain() const override {
+    return explain_system(s_, tr("Angle limit"), rows());
+  }
+  void record(tutorial::ViewerStep& step) const override { record_system(s_, rows(), step); }
 
  private:
   // the rows are written in the constraints' order: the pin's x and y rows, then the limit's
-  inline static const std::vector<std::string> rows = {"pin, x row: C = x̂·(p_b − p_a)",
-                                                       "pin, y row: C = ŷ·(p_b − p_a)",
-                                                       "angle limit, C = θ − θ_L ≥ 0 (eq. 3-17)"};
+  static std::vector<std::string> rows() {
+    return {fill(tr("{0}, x row: C = x̂·(p_b − p_a)"), {tr("pin")}),
+            fill(tr("{0}, y row: C = ŷ·(p_b − p_a)"), {tr("pin")}),
+            tr("angle limit, C = θ − θ_L ≥ 0 (eq. 3-17)")};
+  }
   static constexpr int limit_row = 2;
   double lambda() const { return s_.report.solution.lambda[limit_row]; }
   double slack() const { return s_.report.slack()[limit_row]; }
@@ -91,7 +98,7 @@ class AngleLimitScene : public tutorial::Scene {
     const double theta = planar_angle(s_.at_t[0].q);
     render::Panel panel;
     panel.corner = render::Corner::top_left;
-    panel.title = lambda() > 0.0 ? "At the limit: λ > 0, W = 0" : "Free: λ = 0, W ≥ 0";
+    panel.title = lambda() > 0.0 ? tr("At the limit: λ > 0, W = 0") : tr("Free: λ = 0, W ≥ 0");
     panel.lines = {"θ = " + fixed(theta) + " rad   θ_L = " + fixed(limit) + " rad",
                    "C = θ − θ_L ≥ 0 = " + fixed(theta - limit) + " rad  (3-17)",
                    "ζ = " + fixed(s_.report.mlcp.zeta(limit_row), 2) + " rad/s  (3-18, 3-19)",

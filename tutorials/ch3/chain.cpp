@@ -11,6 +11,7 @@
 #include "app/views/constraints/constraint_view.h"
 #include "ch3/constrained_system.h"
 #include "constraints/revolute_joint.h"
+#include "language/language.h"
 
 namespace lamina::ch3 {
 namespace {
@@ -103,7 +104,8 @@ class Chain : public tutorial::Scene {
   }
 
   void draw(render::Frame& frame) const override {
-    frame.caption = "Ch 3 · A chain on revolute joints: J B λ = η solved by PGS (eq. 3-16, 3-24)";
+    frame.caption =
+        tr("Ch 3 · A chain on revolute joints: J B λ = η solved by PGS (eq. 3-16, 3-24)");
     frame.paths.push_back({trail_, tint(bluish_green, 0.6), false});
     frame.bodies.push_back(mount(chain_pivot));
     const render::Colour fills[] = {render::palette::sky_blue, orange, reddish_purple,
@@ -115,11 +117,13 @@ class Chain : public tutorial::Scene {
     for (const auto& joint : s_.constraints) frame.joints.push_back(*view::joint_view(s_.at_t, *joint));
     frame.panels.push_back(panel());
     frame.legend = {{render::LegendEntry::Sample::line, tint(bluish_green, 0.6),
-                     "path of the chain's free end"}};
+                     tr("path of the chain's free end")}};
     frame.legend_corner = render::Corner::bottom_left;
   }
 
-  tutorial::Explanation explain() const override { return explain_system(s_, "Chain", row_names()); }
+  tutorial::Explanation explain() const override {
+    return explain_system(s_, tr("Chain"), row_names());
+  }
   void record(tutorial::ViewerStep& step) const override { record_system(s_, row_names(), step); }
 
   // The rows: each joint's x and y rows, from the world pin down.
@@ -127,10 +131,10 @@ class Chain : public tutorial::Scene {
     std::vector<std::string> names;
     for (int i = 0; i < links; ++i) {
       const std::string joint =
-          i == 0 ? "world pin – link 0"
-                 : "link " + std::to_string(i - 1) + " – link " + std::to_string(i);
-      names.push_back(joint + ", x row: C = x̂·(p_b − p_a)");
-      names.push_back(joint + ", y row: C = ŷ·(p_b − p_a)");
+          i == 0 ? std::string(tr("world pin – link 0"))
+                 : fill(tr("link {0} – link {1}"), {std::to_string(i - 1), std::to_string(i)});
+      names.push_back(fill(tr("{0}, x row: C = x̂·(p_b − p_a)"), {joint}));
+      names.push_back(fill(tr("{0}, y row: C = ŷ·(p_b − p_a)"), {joint}));
     }
     return names;
   }
@@ -147,15 +151,16 @@ class Chain : public tutorial::Scene {
       rows.push_back({k + 1.0, c.warm.solution.residuals[i], c.cold.solution.residuals[i]});
     }
     tutorial::write_plot(
-        folder, {"pgs_residual",
-                 "Chain of 4 links, step 30 (t = 0.5 s): PGS residual per sweep (eq. 3-23, 3-24)",
-                 "sweep",
-                 "‖W‖ (m/s²), log scale",
-                 {{"from last step's λ (warm start)", bluish_green, false},
-                  {"from λ = 0", vermillion, false}},
-                 rows,
-                 "top right",
-                 true});
+        folder,
+        {"pgs_residual",
+         tr("Chain of 4 links, step 30 (t = 0.5 s): PGS residual per sweep (eq. 3-23, 3-24)"),
+         tr("sweep"),
+         tr("‖W‖ (m/s²), log scale"),
+         {{tr("from last step's λ (warm start)"), bluish_green, false},
+          {tr("from λ = 0"), vermillion, false}},
+         rows,
+         "top right",
+         true});
   }
 
  private:
@@ -172,13 +177,14 @@ class Chain : public tutorial::Scene {
       worst_gap = std::max(worst_gap, std::hypot(C[k], C[k + 1]));
     render::Panel panel;
     panel.corner = render::Corner::top_left;
-    panel.title = "PGS on the chain (4 joints, 8 rows)";
+    panel.title = tr("PGS on the chain (4 joints, 8 rows)");
     panel.lines = {"J: 8 × 24 (3-8)   J B: 8 × 8 (3-16)",
-                   "widest joint gap |p_b − p_a| = " + fixed(worst_gap, 4) + " m"};
+                   fill(tr("widest joint gap |p_b − p_a| = {0} m"), {fixed(worst_gap, 4)})};
     const int sweeps = s_.report.solution.iterations;
-    panel.lines.push_back("‖W‖ after " + std::to_string(sweeps) + " sweeps (3-23, 3-24):");
-    panel.lines.push_back("  from last step's λ  " + scientific(s_.last_residual()) + " m/s²");
-    panel.lines.push_back("  from λ = 0          " + scientific(cold_residual_) + " m/s²");
+    panel.lines.push_back(fill(tr("‖W‖ after {0} sweeps (3-23, 3-24):"), {std::to_string(sweeps)}));
+    panel.lines.push_back(
+        fill(tr("  from last step's λ  {0} m/s²"), {scientific(s_.last_residual())}));
+    panel.lines.push_back(fill(tr("  from λ = 0          {0} m/s²"), {scientific(cold_residual_)}));
     return panel;
   }
 

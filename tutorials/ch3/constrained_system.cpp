@@ -5,6 +5,7 @@
 #include "app/views/constraints/mlcp_explanation.h"
 #include "app/views/motion/body_view.h"
 #include "ch3/text_pgs_explanation.h"
+#include "language/language.h"
 
 namespace lamina::ch3 {
 
@@ -24,25 +25,32 @@ tutorial::Explanation explain_system(const System& s, const std::string& title,
   tutorial::Explanation e;
   const std::vector<std::string> bodies = view::numbered_bodies(s.bodies.size());
   for (std::size_t b = 0; b < s.at_t.size(); ++b) {
-    e.push_back(view::body_section(title + ": " + bodies[b] + " at t", s.at_t[b], {"", "", "3-5", "3-5"}));
+    e.push_back(view::body_section(fill(tr("{0}: {1} at t"), {title, bodies[b]}), s.at_t[b],
+                                   {"", "", "3-5", "3-5"}));
   }
   for (int i = 0; i < s.report.mlcp.row_count(); ++i) {
-    tutorial::Section row = view::row_section(s.report, i, title + ": row " + std::to_string(i) + ": " + row_names.at(i), bodies);
+    tutorial::Section row = view::row_section(
+        s.report, i, fill(tr("{0}: row {1}: {2}"), {title, std::to_string(i), row_names.at(i)}),
+        bodies);
     // C goes just before ζ = −β C / Δt, which it gives (eq. 3-13, 3-14)
     const auto zeta = std::find_if(row.quantities.begin(), row.quantities.end(),
                                    [](const tutorial::Quantity& q) { return q.symbol == "ζ"; });
-    row.quantities.insert(zeta, {"C", "3-13", "position error ε at t", s.C.at(i), "m"});
+    row.quantities.insert(zeta, {"C", "3-13", tr("position error ε at t"), s.C.at(i), "m"});
     e.push_back(row);
   }
-  e.push_back(view::sweeps_section(s.report, title + ": projected Gauss-Seidel (eq. 3-24)"));
-  e.push_back(text_pgs_section(s, title + ": the same step by the text's Projected Gauss-Seidel"));
+  e.push_back(
+      view::sweeps_section(s.report, fill(tr("{0}: projected Gauss-Seidel (eq. 3-24)"), {title})));
+  e.push_back(text_pgs_section(
+      s, fill(tr("{0}: the same step by the text's Projected Gauss-Seidel"), {title})));
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
-    tutorial::Section after = view::body_section(title + ": " + bodies[b] + " at t + Δt", s.bodies[b],
-                                                 {"2-5", "2-6", "2-3", "2-4"});
+    tutorial::Section after = view::body_section(fill(tr("{0}: {1} at t + Δt"), {title, bodies[b]}),
+                                                 s.bodies[b], {"2-5", "2-6", "2-3", "2-4"});
     after.quantities.insert(after.quantities.begin(), view::constraint_force(s.report, static_cast<int>(b)));
     e.push_back(after);
   }
-  if (auto dense = view::dense_section(s.report, s.at_t, title + ": the dense system")) e.push_back(*dense);
+  if (auto dense =
+          view::dense_section(s.report, s.at_t, fill(tr("{0}: the dense system"), {title})))
+    e.push_back(*dense);
   return e;
 }
 

@@ -5,6 +5,7 @@
 #include "ch3/constrained_system.h"
 #include "ch3/incline_geometry.h"
 #include "constraints/incline_constraint.h"
+#include "language/language.h"
 
 namespace lamina::ch3 {
 namespace {
@@ -31,7 +32,7 @@ class Incline : public tutorial::Scene {
 
   void draw(render::Frame& frame) const override {
     const RigidBody& box = s_.at_t[0];
-    frame.caption = "Ch 3 · Fig 3-1: a box held on an incline, (x − p)·N = 0 (eq. 3-1..3-4)";
+    frame.caption = tr("Ch 3 · Fig 3-1: a box held on an incline, (x − p)·N = 0 (eq. 3-1..3-4)");
     frame.force_scale = incline_force_scale;
     frame.velocity_scale = 0.15;
     // θ between the slope and the horizontal, where the surface meets y = 0
@@ -51,18 +52,21 @@ class Incline : public tutorial::Scene {
         {x, x + k * (weight + support), bluish_green, "", render::Overlay::forces});
     frame.panels.push_back(panel());
     frame.legend = {
-        {render::LegendEntry::Sample::arrow, vermillion, "weight m g"},
-        {render::LegendEntry::Sample::arrow, blue, "constraint force F_c = Jᵀλ = λN (3-11)"},
-        {render::LegendEntry::Sample::arrow, bluish_green, "m g + λN = m g sin θ down the slope"},
+        {render::LegendEntry::Sample::arrow, vermillion, tr("weight m g")},
+        {render::LegendEntry::Sample::arrow, blue, tr("constraint force F_c = Jᵀλ = λN (3-11)")},
+        {render::LegendEntry::Sample::arrow, bluish_green,
+         tr("m g + λN = m g sin θ down the slope")},
         {render::LegendEntry::Sample::dashed_line, grey, "C = (x − p)·N = 0"}};
     frame.legend_corner = render::Corner::bottom_left;
   }
 
-  tutorial::Explanation explain() const override { return explain_system(s_, "Fig 3-1 incline", rows); }
-  void record(tutorial::ViewerStep& step) const override { record_system(s_, rows, step); }
+  tutorial::Explanation explain() const override {
+    return explain_system(s_, tr("Fig 3-1 incline"), rows());
+  }
+  void record(tutorial::ViewerStep& step) const override { record_system(s_, rows(), step); }
 
  private:
-  inline static const std::vector<std::string> rows = {"incline, C = (x − p)·N (eq. 3-1)"};
+  static std::vector<std::string> rows() { return {tr("incline, C = (x − p)·N (eq. 3-1)")}; }
   double lambda() const { return s_.report.solution.lambda[0]; }
   static double speed(const RigidBody& box) { return planar(box.v).dot(downhill); }
 
@@ -71,7 +75,7 @@ class Incline : public tutorial::Scene {
     const double g = gravity.norm(), dt = s_.settings.step.dt;
     render::Panel panel;
     panel.corner = render::Corner::top_right;
-    panel.title = "The incline in numbers";
+    panel.title = tr("The incline in numbers");
     panel.lines = {"m = " + fixed(box.mass, 1) + " kg   θ = 30°   N = (" +
                        fixed(incline::normal.x()) + ", " + fixed(incline::normal.y()) + ")",
                    "C = (x − p)·N     = " + scientific(incline::error(box)) + " m  (3-1)"};
@@ -82,10 +86,11 @@ class Incline : public tutorial::Scene {
          "ζ = −βC/Δt       = " + fixed(r.mlcp.zeta(0)) + " m/s  (3-14)",
          "η = ζ/Δt − J(V/Δt + M⁻¹F) = " + fixed(r.mlcp.eta(0)) + " m/s²  (3-16)",
          "λ = η / (J M⁻¹ Jᵀ) = " + fixed(lambda()) + " N  (3-3, 3-4)",
-         "m g cos θ        = " + fixed(box.mass * g * std::cos(incline::angle)) + " N  (theory)",
-         "a along slope    = " + fixed((speed(s_.bodies[0]) - speed(box)) / dt) + " m/s²",
-         "g sin θ          = " + fixed(g * std::sin(incline::angle)) + " m/s²  (theory)",
-         "arrows: " + fixed(incline_force_scale, 2) + " m per N"});
+         fill(tr("m g cos θ        = {0} N  (theory)"),
+              {fixed(box.mass * g * std::cos(incline::angle))}),
+         fill(tr("a along slope    = {0} m/s²"), {fixed((speed(s_.bodies[0]) - speed(box)) / dt)}),
+         fill(tr("g sin θ          = {0} m/s²  (theory)"), {fixed(g * std::sin(incline::angle))}),
+         fill(tr("arrows: {0} m per N"), {fixed(incline_force_scale, 2)})});
     return panel;
   }
 

@@ -8,6 +8,7 @@
 #include "ch3/incline_geometry.h"
 #include "ch3/sign_diagram.h"
 #include "constraints/incline_constraint.h"
+#include "language/language.h"
 
 namespace lamina::ch3 {
 namespace {
@@ -20,8 +21,8 @@ constexpr double longest_arrow = 1.5;  // a longer force arrow is cut to this, i
 class OneSidedIncline : public tutorial::Scene {
  public:
   OneSidedIncline()
-      : diagram_(Vec2(11.0, 1.0), Vec2(5.0, 3.3), {250.0, 50.0, "λ (N)"}, {2000.0, 500.0, "W (m/s²)"},
-                 "incline row", SignDiagram::Caption::above) {
+      : diagram_(Vec2(11.0, 1.0), Vec2(5.0, 3.3), {250.0, 50.0, "λ (N)"},
+                 {2000.0, 500.0, "W (m/s²)"}, tr("incline row"), SignDiagram::Caption::above) {
     RigidBody box = incline::box_on_line(1.0);
     box.v = spatial(throw_off * incline::normal + throw_along * incline::downhill);
     s_.bodies.push_back(box);
@@ -43,7 +44,8 @@ class OneSidedIncline : public tutorial::Scene {
 
   void draw(render::Frame& frame) const override {
     const RigidBody& box = s_.at_t[0];
-    frame.caption = "Ch 3 · Fig 3-2, 3-3: a box that may leave the line, (x − p)·N ≥ 0 (eq. 3-17..3-22)";
+    frame.caption =
+        tr("Ch 3 · Fig 3-2, 3-3: a box that may leave the line, (x − p)·N ≥ 0 (eq. 3-17..3-22)");
     frame.force_scale = force_scale;
     incline::draw_line(frame, 12.0);
     frame.paths.push_back({trail_, tint(bluish_green, 0.6), false});
@@ -55,28 +57,31 @@ class OneSidedIncline : public tutorial::Scene {
     if (lambda() > 0.0) {
       const double length = std::min(force_scale * lambda(), longest_arrow);
       const std::string label =
-          length < longest_arrow ? "λN" : "λN (cut: " + fixed(lambda(), 0) + " N)";
+          length < longest_arrow ? "λN" : fill(tr("λN (cut: {0} N)"), {fixed(lambda(), 0)});
       frame.arrows.push_back({x, x + length * incline::normal, blue, label, render::Overlay::forces});
     }
     diagram_.draw(frame);
     frame.panels.push_back(panel());
     frame.legend = {
-        {render::LegendEntry::Sample::dashed_line, grey, "C = (x − p)·N = 0: the centre may not go below"},
-        {render::LegendEntry::Sample::line, tint(bluish_green, 0.6), "path of the centre x"},
-        {render::LegendEntry::Sample::arrow, vermillion, "weight m g"},
-        {render::LegendEntry::Sample::arrow, blue, "F_c = Jᵀλ = λN, only a push (λ ≥ 0)"},
+        {render::LegendEntry::Sample::dashed_line, grey,
+         tr("C = (x − p)·N = 0: the centre may not go below")},
+        {render::LegendEntry::Sample::line, tint(bluish_green, 0.6), tr("path of the centre x")},
+        {render::LegendEntry::Sample::arrow, vermillion, tr("weight m g")},
+        {render::LegendEntry::Sample::arrow, blue, tr("F_c = Jᵀλ = λN, only a push (λ ≥ 0)")},
         {render::LegendEntry::Sample::swatch, reddish_purple,
-         "(λ, W) of this step; the dots: the steps before"}};
+         tr("(λ, W) of this step; the dots: the steps before")}};
     frame.legend_corner = render::Corner::bottom_right;
   }
 
   tutorial::Explanation explain() const override {
-    return explain_system(s_, "Fig 3-2 one-sided incline", rows);
+    return explain_system(s_, tr("Fig 3-2 one-sided incline"), rows());
   }
-  void record(tutorial::ViewerStep& step) const override { record_system(s_, rows, step); }
+  void record(tutorial::ViewerStep& step) const override { record_system(s_, rows(), step); }
 
  private:
-  inline static const std::vector<std::string> rows = {"one-sided incline, C = (x − p)·N ≥ 0 (eq. 3-17)"};
+  static std::vector<std::string> rows() {
+    return {tr("one-sided incline, C = (x − p)·N ≥ 0 (eq. 3-17)")};
+  }
   double lambda() const { return s_.report.solution.lambda[0]; }
   double slack() const { return s_.report.slack()[0]; }
 
@@ -84,7 +89,7 @@ class OneSidedIncline : public tutorial::Scene {
     const double C = incline::error(s_.at_t[0]);
     render::Panel panel;
     panel.corner = render::Corner::bottom_left;
-    panel.title = lambda() > 0.0 ? "On the line: λ > 0, W = 0" : "Free: λ = 0, W ≥ 0";
+    panel.title = lambda() > 0.0 ? tr("On the line: λ > 0, W = 0") : tr("Free: λ = 0, W ≥ 0");
     panel.lines = {
         "C = (x − p)·N ≥ 0   = " + fixed(C) + " m  (3-17)",
         std::string(C > 0.0 ? "ζ = −C/Δt (C > 0)  " : "ζ = −βC/Δt (C ≤ 0) ") + " = " +

@@ -9,6 +9,7 @@
 #include "app/views/constraints/constraint_view.h"
 #include "ch3/constrained_system.h"
 #include "constraints/distance_constraint.h"
+#include "language/language.h"
 
 namespace lamina::ch3 {
 namespace {
@@ -51,8 +52,8 @@ struct Pendulum {
 class PendulumPair : public tutorial::Scene {
  public:
   PendulumPair()
-      : runs_{Pendulum("β = 0: no bias", 0.0, vermillion, Vec3(-2.7, 0.6, 0.0)),
-              Pendulum("β = 0.2 (eq. 3-14)", 0.2, bluish_green, Vec3(2.7, 0.6, 0.0))} {
+      : runs_{Pendulum(tr("β = 0: no bias"), 0.0, vermillion, Vec3(-2.7, 0.6, 0.0)),
+              Pendulum(tr("β = 0.2 (eq. 3-14)"), 0.2, bluish_green, Vec3(2.7, 0.6, 0.0))} {
     record();
   }
 
@@ -67,7 +68,7 @@ class PendulumPair : public tutorial::Scene {
 
   void draw(render::Frame& frame) const override {
     frame.caption =
-        "Ch 3 · A pendulum on a rod: C = |p − pivot| − L drifts unless β > 0 (eq. 3-14)";
+        tr("Ch 3 · A pendulum on a rod: C = |p − pivot| − L drifts unless β > 0 (eq. 3-14)");
     frame.force_scale = pendulum_force_scale;
     for (const Pendulum& run : runs_) {
       const RigidBody& bob = run.s.at_t[0];
@@ -89,16 +90,16 @@ class PendulumPair : public tutorial::Scene {
       frame.panels.push_back(panel(run));
     }
     frame.legend = {
-        {render::LegendEntry::Sample::dashed_line, grey, "C = 0: the circle |p − pivot| = L"},
-        {render::LegendEntry::Sample::arrow, blue, "rod force F_c = Jᵀλ (3-11)"}};
+        {render::LegendEntry::Sample::dashed_line, grey, tr("C = 0: the circle |p − pivot| = L")},
+        {render::LegendEntry::Sample::arrow, blue, tr("rod force F_c = Jᵀλ (3-11)")}};
     frame.legend_corner = render::Corner::bottom_left;
   }
 
   tutorial::Explanation explain() const override {
     tutorial::Explanation e;
     for (const Pendulum& run : runs_) {
-      tutorial::Explanation one = explain_system(run.s, std::string("Pendulum, ") + run.title,
-                                                 {"rod, C = |p_b − p_a| − L"});
+      tutorial::Explanation one = explain_system(run.s, fill(tr("Pendulum, {0}"), {run.title}),
+                                                 {tr("rod, C = |p_b − p_a| − L")});
       e.insert(e.end(), one.begin(), one.end());
     }
     return e;
@@ -108,7 +109,7 @@ class PendulumPair : public tutorial::Scene {
     tutorial::write_plot(
         folder,
         {"pendulum_drift",
-         "Pendulum on a rod, L = 1.5 m, Δt = 1/30 s: drift |C| = ||p − pivot| − L|",
+         tr("Pendulum on a rod, L = 1.5 m, Δt = 1/30 s: drift |C| = ||p − pivot| − L|"),
          "t (s)",
          "|C| (m)",
          {{runs_[0].title, runs_[0].colour, false}, {runs_[1].title, runs_[1].colour, false}},
@@ -133,13 +134,13 @@ class PendulumPair : public tutorial::Scene {
   render::Panel panel(const Pendulum& run) const {
     render::Panel panel;
     panel.corner = &run == &runs_[0] ? render::Corner::top_left : render::Corner::top_right;
-    panel.title = std::string("Pendulum, ") + run.title;
+    panel.title = fill(tr("Pendulum, {0}"), {run.title});
     panel.title_colour = run.colour;
     panel.lines = {"L = 1.5 m   m = 1 kg   θ0 = 1 rad",
-                   "C = |p − pivot| − L = " + fixed(run.error(run.s.at_t[0]), 4) + " m"};
+                   fill(tr("C = |p − pivot| − L = {0} m"), {fixed(run.error(run.s.at_t[0]), 4)})};
     const StepReport& r = run.s.report;
     panel.lines.push_back("ζ = −βC/Δt = " + fixed(r.mlcp.zeta(0), 4) + " m/s  (3-14)");
-    panel.lines.push_back("λ = " + fixed(r.solution.lambda[0], 2) + " N (rod tension −λ)");
+    panel.lines.push_back(fill(tr("λ = {0} N (rod tension −λ)"), {fixed(r.solution.lambda[0], 2)}));
     return panel;
   }
 

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "app/harness/format.h"
+#include "language/language.h"
 
 namespace lamina::ch3 {
 namespace {
@@ -49,7 +50,8 @@ void SignDiagram::draw(render::Frame& frame) const {
   const double unit = 0.02 * std::min(size_.x(), size_.y());  // hatch and tick size, in m
   const double caption_height = caption_ == Caption::above ? 1.32 : -0.45;
   frame.labels.push_back({origin_ + caption_height * ey - negative_part * ex,
-                          "Fig 3-3 · (λ, W) of the " + row_ + " (eq. 3-21)", palette::ink, Align::left});
+                          fill(tr("Fig 3-3 · (λ, W) of the {0} (eq. 3-21)"), {row_}), palette::ink,
+                          Align::left});
   // the axes, each from its negative part to past the end of its scale
   for (const auto& [axis, name] : {std::pair{ex, lambda_.name}, std::pair{ey, W_.name}}) {
     frame.arrows.push_back({origin_ - negative_part * axis, origin_ + 1.1 * axis, palette::ink, name, std::nullopt});
@@ -75,11 +77,16 @@ void SignDiagram::draw(render::Frame& frame) const {
     frame.labels.push_back({p - 4.5 * left, tutorial::fixed(v, 0), palette::grey, Align::right});
   }
   // the allowed half-axes and the forbidden regions, named
-  frame.labels.push_back({origin_ + 0.04 * ex + 0.92 * ey, "λ = 0: free", palette::blue, Align::left});
-  frame.labels.push_back({origin_ + 0.97 * ex + 0.08 * ey, "W = 0: on C = 0", palette::vermillion, Align::right});
-  frame.labels.push_back({origin_ + 0.55 * ex + 0.5 * ey, "λ > 0 and W > 0: λ W ≠ 0", palette::grey, Align::centre});
-  frame.labels.push_back({origin_ + 0.55 * ex - 0.24 * ey, "W < 0: C would pass 0", palette::grey, Align::centre});
-  frame.labels.push_back({origin_ - 0.03 * ex - 0.24 * ey, "λ < 0: a pull", palette::grey, Align::right});
+  frame.labels.push_back(
+      {origin_ + 0.04 * ex + 0.92 * ey, tr("λ = 0: free"), palette::blue, Align::left});
+  frame.labels.push_back(
+      {origin_ + 0.97 * ex + 0.08 * ey, tr("W = 0: on C = 0"), palette::vermillion, Align::right});
+  frame.labels.push_back({origin_ + 0.55 * ex + 0.5 * ey, tr("λ > 0 and W > 0: λ W ≠ 0"),
+                          palette::grey, Align::centre});
+  frame.labels.push_back(
+      {origin_ + 0.55 * ex - 0.24 * ey, tr("W < 0: C would pass 0"), palette::grey, Align::centre});
+  frame.labels.push_back(
+      {origin_ - 0.03 * ex - 0.24 * ey, tr("λ < 0: a pull"), palette::grey, Align::right});
   // the pairs up to step k: free (λ = 0) blue, pushing (λ > 0) vermillion, step k's larger
   for (std::size_t k = 0; k < pairs_.size(); ++k) {
     const Vec2& pair = pairs_[k];

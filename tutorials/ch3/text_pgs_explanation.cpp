@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "constraints/text_pgs.h"
+#include "language/language.h"
 #include "motion/integrator.h"
 
 namespace lamina::ch3 {
@@ -62,21 +63,27 @@ tutorial::Section text_pgs_section(const System& s, const std::string& title) {
   const Eigen::VectorXd& packed = s.report.solution.lambda;
   tutorial::Section section{title, {}};
   auto add = [&](tutorial::Quantity q) { section.quantities.push_back(std::move(q)); };
-  add({"Jmap", "", "Jmap[s][2]: each row's two bodies, −1 for none", json_of(body_map(problem.Jmap)), ""});
-  add({"Jsp", "3-8", "Jsp[s][2]: each row's J blocks, [v ω | v ω]", json_of(side_by_side(problem.Jsp)), ""});
-  add({"Bsp", "3-16", "Convert: Bsp[i][k] = M⁻¹[Jmap[i][k]] Jsp[i][k], the blocks of Bᵀ = J M⁻¹",
+  add({"Jmap", "", tr("Jmap[s][2]: each row's two bodies, −1 for none"),
+       json_of(body_map(problem.Jmap)), ""});
+  add({"Jsp", "3-8", tr("Jsp[s][2]: each row's J blocks, [v ω | v ω]"),
+       json_of(side_by_side(problem.Jsp)), ""});
+  add({"Bsp", "3-16",
+       tr("Convert: Bsp[i][k] = M⁻¹[Jmap[i][k]] Jsp[i][k], the blocks of Bᵀ = J M⁻¹"),
        json_of(side_by_side(trace.Bsp)), ""});
-  add({"d", "", "d[i] = Jsp[i][0]·Bsp[i][0] + Jsp[i][1]·Bsp[i][1], the diagonal of J B",
+  add({"d", "", tr("d[i] = Jsp[i][0]·Bsp[i][0] + Jsp[i][1]·Bsp[i][1], the diagonal of J B"),
        json_of(vector_of(trace.d)), ""});
   add({"η", "3-16", "ζ/Δt − Multiply(Jsp, Jmap, V/Δt + M⁻¹F_ext)", json_of(vector_of(problem.eta)), "m/s²"});
-  add({"a = B λ_exp", "", "TransposeMultiply(Bsp, Jmap, λ_exp): [v ω] per body, before the sweeps",
+  add({"a = B λ_exp", "",
+       tr("TransposeMultiply(Bsp, Jmap, λ_exp): [v ω] per body, before the sweeps"),
        json_of(per_body(trace.a_start)), ""});
-  add({"λ after each sweep", "3-24", "one line per sweep, each λ_i clamped to [λ⁻_i, λ⁺_i]",
+  add({tr("λ after each sweep"), "3-24", tr("one line per sweep, each λ_i clamped to [λ⁻_i, λ⁺_i]"),
        json_of(per_sweep(trace.lambda_after_sweep, rows.size())), "N"});
-  add({"a = B λ", "", "after the last sweep, per body", json_of(per_body(trace.a)), ""});
-  add({"λ (the text's PGS)", "3-24", "ProjectedGaussSeidel's answer", json_of(vector_of(lambda)), "N"});
-  add({"λ (PgsSolver)", "3-24", "the packed solver's answer, the one the step used", json_of(packed), "N"});
-  add({"max |Δλ|", "", "the two answers' largest difference (round-off)",
+  add({"a = B λ", "", tr("after the last sweep, per body"), json_of(per_body(trace.a)), ""});
+  add({tr("λ (the text's PGS)"), "3-24", tr("ProjectedGaussSeidel's answer"),
+       json_of(vector_of(lambda)), "N"});
+  add({"λ (PgsSolver)", "3-24", tr("the packed solver's answer, the one the step used"),
+       json_of(packed), "N"});
+  add({"max |Δλ|", "", tr("the two answers' largest difference (round-off)"),
        (vector_of(lambda) - packed).cwiseAbs().maxCoeff(), "N"});
   return section;
 }

@@ -10,6 +10,7 @@
 #include "app/views/contact/world_view.h"
 #include "contact/solvers.h"
 #include "kinematics/rotation.h"
+#include "language/language.h"
 
 namespace lamina::ch4 {
 namespace {
@@ -42,8 +43,8 @@ class ContactGeometry : public tutorial::Scene {
   void step() override { world_.step(); }
 
   void draw(render::Frame& frame) const override {
-    frame.caption = "Fig 4-1 · one contact: C = (x2 + r2 − x1 − r1)·n1 (eq. 4-1) · solver " +
-                    world_.world().settings().solver;
+    frame.caption = fill(tr("Fig 4-1 · one contact: C = (x2 + r2 − x1 − r1)·n1 (eq. 4-1) · solver {0}"),
+                         {world_.world().settings().solver});
     for (int i = 0; i < 2; ++i) {
       render::Body body = view::body_view(world_.bodies_at_t()[static_cast<std::size_t>(i)],
                                           world_.world().shape(i),
@@ -82,7 +83,7 @@ class ContactGeometry : public tutorial::Scene {
   }
 
   tutorial::Explanation explain() const override {
-    return view::explain_world_step(world_.world(), world_.report(), {"body 1", "body 2"});
+    return view::explain_world_step(world_.world(), world_.report(), {fill(tr("body {0}"), {"1"}), fill(tr("body {0}"), {"2"})});
   }
 
  private:
@@ -136,15 +137,16 @@ class ContactGeometry : public tutorial::Scene {
     const double separation = (geo.x2 + geo.r2 - geo.x1 - geo.r1).dot(geo.n1);
     render::Panel p;
     p.corner = render::Corner::top_left;
-    p.title = std::string(c.cached ? "a point kept by the cache" : "the deepest point") + " at t = " +
-              fixed(world_.report().time, 3) + " s";
+    p.title = fill(c.cached ? tr("a point kept by the cache at t = {0} s") : tr("the deepest point at t = {0} s"),
+                   {fixed(world_.report().time, 3)});
     p.lines = {"x1 = " + planar(geo.x1) + "   x2 = " + planar(geo.x2) + " m",
                "r1 = " + planar(geo.r1) + "   r2 = " + planar(geo.r2) + " m",
-               "n1 = " + planar(geo.n1) + ", body 1's outward normal",
-               "(x2 + r2 − x1 − r1)·n1 = " + fixed(1000.0 * separation, 2) + " mm (eq. 4-1)",
-               "the engine's C = " + fixed(1000.0 * c.separation, 2) + " mm" +
-                   (c.separation < 0.0 ? ": < 0, the corner is in" : ": ≥ 0, apart"),
-               "λ = " + fixed(c.lambda_normal, 2) + " N pushes along n1 on body 2 (eq. 4-3)"};
+               fill(tr("n1 = {0}, body 1's outward normal"), {planar(geo.n1)}),
+               fill(tr("(x2 + r2 − x1 − r1)·n1 = {0} mm (eq. 4-1)"), {fixed(1000.0 * separation, 2)}),
+               fill(c.separation < 0.0 ? tr("the engine's C = {0} mm: < 0, the corner is in")
+                                       : tr("the engine's C = {0} mm: ≥ 0, apart"),
+                    {fixed(1000.0 * c.separation, 2)}),
+               fill(tr("λ = {0} N pushes along n1 on body 2 (eq. 4-3)"), {fixed(c.lambda_normal, 2)})};
     return p;
   }
 

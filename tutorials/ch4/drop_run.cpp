@@ -6,6 +6,7 @@
 #include "app/harness/format.h"
 #include "app/views/contact/world_explanation.h"
 #include "app/views/contact/world_view.h"
+#include "language/language.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
 
@@ -20,7 +21,24 @@ constexpr double squeeze = 0.1;         // N: friction at rest larger than this 
 constexpr double hover = 1e-4;          // m: a cached point this far above the ground hovers
 const double g = -StepSettings().gravity.y();  // |g|, in m/s²
 
-const std::vector<std::string> drop_names{"ground", "box"};
+// The bodies' names, in the language of the run (tr() at run time, not in an initialiser).
+std::vector<std::string> drop_names() { return {tr("ground"), tr("box")}; }
+
+// A contact's origin as the panel's column names it: "new", "refound", "kept" (origin_name),
+// padded to one column of 7 (a Hangul syllable counted as two).
+std::string origin_column(ContactOrigin origin) {
+  std::string name = origin == ContactOrigin::fresh     ? tr("new")
+                     : origin == ContactOrigin::refound ? tr("refound")
+                                                        : tr("kept");
+  std::size_t width = 0;
+  for (const char c : name) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x80) ++width;
+    else if (u >= 0xE0) width += 2;  // the lead byte of a three-byte (Hangul) character
+  }
+  if (width < 7) name.append(7 - width, ' ');
+  return name;
+}
 
 // Landing impacts are tens of times the weight: an arrow longer than `longest_force` is drawn
 // at that length, and a label `offset` from its tip gives the force.
@@ -28,7 +46,7 @@ void cut_arrow(render::Frame& frame, const Vec2& from, const Vec2& direction, do
                const std::string& symbol, render::Colour colour, const Vec2& offset) {
   if (std::abs(force) <= longest_force) return;
   const Vec2 tip = from + force_scale * std::copysign(longest_force, force) * direction;
-  frame.labels.push_back({tip + offset, symbol + " = " + fixed(force, 0) + " N (arrow cut)",
+  frame.labels.push_back({tip + offset, fill(tr("{0} = {1} N (arrow cut)"), {symbol, fixed(force, 0)}),
                           colour, render::Label::Align::left});
   force = std::copysign(longest_force, force);
 }
@@ -107,38 +125,37 @@ render::Panel DropRun::panel(render::Corner corner, render::Colour colour) const
   const std::vector<ContactInfo> contacts = run_.report().contacts();
   render::Panel p;
   p.corner = corner;
-  p.title = "solver " + solver_ + (cache_ ? " · cache on" : " · cache off");
+  p.title = fill(cache_ ? tr("solver {0} · cache on") : tr("solver {0} · cache off"), {solver_});
   p.title_colour = colour;
   p.lines = {"θ = " + fixed(planar_angle(box.q), 3) + " rad   ω = " +
                  fixed(box.angular_velocity.z(), 2) + " rad/s",
-             "penetration = " + fixed(1000.0 * penetration(box), 1) + " mm"};
+             fill(tr("penetration = {0} mm"), {fixed(1000.0 * penetration(box), 1)})};
   double total = 0.0, friction = 0.0;
   for (const ContactInfo& c : contacts) {
-    std::string origin = origin_name(c.origin);
-    origin.resize(7, ' ');  // "new", "refound", "kept", in one column
+    const std::string origin = origin_column(c.origin);  // "new", "refound", "kept", in one column
     p.lines.push_back(corner_name(c) + " " + origin + " C = " +
                       fixed(c.separation, 4) + " m  λ_n = " + fixed(c.lambda_normal, 1) +
                       " N  λ_t = " + fixed(c.lambda_tangent, 1) + " N");
     total += c.lambda_normal;
     friction += c.lambda_tangent;
   }
-  if (contacts.empty()) p.lines.push_back("no contact: falling under m g");
+  if (contacts.empty()) p.lines.push_back(tr("no contact: falling under m g"));
   p.lines.push_back("Σ λ_n = " + fixed(total, 2) + " N (m g = " + fixed(g, 2) + " N), Σ λ_t = " +
                     fixed(friction, 2) + " N");
   // The text's method leaves two things Lamina's does not (contact/solvers.h): a kept point
   // above the ground that still pushes, and at rest friction squeezing the box.
   for (const ContactInfo& c : contacts) {
     if (c.cached && c.separation > hover && c.lambda_normal > 0.0) {
-      p.lines.push_back(corner_name(c) + " pushes from " + fixed(1000.0 * c.separation, 1) +
-                        " mm up: a kept gap asks ζ = 0 (eq. 4-4)");
+      p.lines.push_back(fill(tr("{0} pushes from {1} mm up: a kept gap asks ζ = 0 (eq. 4-4)"),
+                             {corner_name(c), fixed(1000.0 * c.separation, 1)}));
     }
   }
   if (moment_ != view::Fig4Moment::at_rest) return p;
   if (contacts.size() == 2 && std::abs(contacts[0].lambda_tangent) > squeeze &&
       contacts[0].lambda_tangent * contacts[1].lambda_tangent < 0.0) {
-    p.lines.push_back("λ_t = ±" + fixed(std::abs(contacts[0].lambda_tangent), 1) +
-                      " N pull inwards: the two friction rows are");
-    p.lines.push_back("one row twice, only their sum is fixed (pgs: one row)");
+    p.lines.push_back(fill(tr("λ_t = ±{0} N pull inwards: the two friction rows are"),
+                           {fixed(std::abs(contacts[0].lambda_tangent), 1)}));
+    p.lines.push_back(tr("one row twice, only their sum is fixed (pgs: one row)"));
   }
   return p;
 }
@@ -146,44 +163,44 @@ render::Panel DropRun::panel(render::Corner corner, render::Colour colour) const
 std::string DropRun::moment() const {
   if (!cache_ && touched_ && moment_ != view::Fig4Moment::first_contact &&
       moment_ != view::Fig4Moment::no_contact) {
-    return "cache off · only this step's deepest point: the box see-saws, never rests";
+    return tr("cache off · only this step's deepest point: the box see-saws, never rests");
   }
   const std::vector<ContactInfo> contacts = run_.report().contacts();
   switch (moment_) {
     case view::Fig4Moment::no_contact:
-      return touched_ ? "in the air: no contact" : "falling: no contact yet";
+      return touched_ ? tr("in the air: no contact") : tr("falling: no contact yet");
     case view::Fig4Moment::first_contact:
-      return "Fig 4-2 · first contact: collision detection gives one new point, the deepest corner a";
+      return tr("Fig 4-2 · first contact: collision detection gives one new point, the deepest corner a");
     case view::Fig4Moment::one_point:
       for (const ContactInfo& c : contacts) {
         if (c.lambda_normal > 0.0) {
-          return "Fig 4-3 · one point pushes, corner " + corner_name(c) + ": the box turns over it";
+          return fill(tr("Fig 4-3 · one point pushes, corner {0}: the box turns over it"), {corner_name(c)});
         }
       }
-      return "Fig 4-3 · one point, pushing nothing this step: the box turns over corner " +
-             corner_name(contacts.front());
+      return fill(tr("Fig 4-3 · one point, pushing nothing this step: the box turns over corner {0}"),
+                  {corner_name(contacts.front())});
     case view::Fig4Moment::two_points:
       for (const ContactInfo& fresh : contacts) {
         for (const ContactInfo& kept : contacts) {
           if (fresh.origin == ContactOrigin::fresh && kept.origin == ContactOrigin::kept) {
-            return "Fig 4-4 · corner " + corner_name(fresh) + " goes in, new, while " +
-                   corner_name(kept) + " is kept by the cache: both push, solved together";
+            return fill(tr("Fig 4-4 · corner {0} goes in, new, while {1} is kept by the cache: both push, solved together"),
+                        {corner_name(fresh), corner_name(kept)});
           }
         }
       }
-      return "Fig 4-4 · both corners push, solved together";
+      return tr("Fig 4-4 · both corners push, solved together");
     case view::Fig4Moment::at_rest:
-      return "Fig 4-5 · at rest on two points, kept or re-found, together carrying m g";
+      return tr("Fig 4-5 · at rest on two points, kept or re-found, together carrying m g");
   }
   return "";
 }
 
 tutorial::Explanation DropRun::explain() const {
-  return view::explain_world_step(run_.world(), run_.report(), drop_names);
+  return view::explain_world_step(run_.world(), run_.report(), drop_names());
 }
 
 tutorial::ViewerStep DropRun::viewer_step() const {
-  return view::viewer_step(run_.world(), run_.report(), drop_names);
+  return view::viewer_step(run_.world(), run_.report(), drop_names());
 }
 
 }  // namespace lamina::ch4

@@ -8,6 +8,7 @@
 #include "app/views/contact/world_explanation.h"
 #include "app/views/contact/world_view.h"
 #include "contact/solvers.h"
+#include "language/language.h"
 
 namespace lamina::ch4 {
 namespace {
@@ -44,8 +45,8 @@ class FrictionRamp : public tutorial::Scene {
   void step() override { world_.step(); }
 
   void draw(render::Frame& frame) const override {
-    frame.caption = "Friction, bounds ±μ λc: sticks when tan θ < μ, slides when tan θ > μ · solver " +
-                    world_.world().settings().solver;
+    frame.caption = fill(tr("Friction, bounds ±μ λc: sticks when tan θ < μ, slides when tan θ > μ · solver {0}"),
+                         {world_.world().settings().solver});
     frame.force_scale = 0.35;
     for (std::size_t i = 0; i < ramps_.size(); ++i) {
       const int ramp = static_cast<int>(2 * i), box = ramp + 1;
@@ -61,7 +62,8 @@ class FrictionRamp : public tutorial::Scene {
 
   tutorial::Explanation explain() const override {
     return view::explain_world_step(world_.world(), world_.report(),
-                                    {"ramp 20°", "box on 20°", "ramp 35°", "box on 35°"});
+                                    {fill(tr("ramp {0}"), {"20°"}), fill(tr("box on {0}"), {"20°"}),
+                                     fill(tr("ramp {0}"), {"35°"}), fill(tr("box on {0}"), {"35°"})});
   }
 
  private:
@@ -110,14 +112,14 @@ class FrictionRamp : public tutorial::Scene {
     const bool slides = std::tan(r.theta) > mu;
     render::Panel p;
     p.corner = r.corner;
-    p.title = "θ = " + fixed(r.theta * 180.0 / M_PI, 0) + "°: tan θ = " +
-              fixed(std::tan(r.theta), 3) + (slides ? " > μ = " : " < μ = ") + fixed(mu, 1) +
-              (slides ? ", slides" : ", sticks");
+    p.title = fill(slides ? tr("θ = {0}°: tan θ = {1} > μ = {2}, slides")
+                          : tr("θ = {0}°: tan θ = {1} < μ = {2}, sticks"),
+                   {fixed(r.theta * 180.0 / M_PI, 0), fixed(std::tan(r.theta), 3), fixed(mu, 1)});
     p.title_colour = r.colour;
     p.lines = {"g (sin θ − μ cos θ) = " + fixed(predicted, 3) + " m/s²" +
-                   (slides ? "" : " < 0: friction holds"),
-               "a along the slope = " + fixed(measured, 3) + " m/s² (solved)",
-               "v along the slope = " + fixed(after.v.dot(down_slope), 3) + " m/s",
+                   (slides ? "" : tr(" < 0: friction holds")),
+               fill(tr("a along the slope = {0} m/s² (solved)"), {fixed(measured, 3)}),
+               fill(tr("v along the slope = {0} m/s"), {fixed(after.v.dot(down_slope), 3)}),
                "|Σ λ_t| = " + fixed(std::abs(friction), 3) + " N,  μ Σ λ_n = " +
                    fixed(mu * normal, 3) + " N"};
     return p;

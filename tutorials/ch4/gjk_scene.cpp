@@ -9,6 +9,7 @@
 #include "ch4/pair_figure.h"
 #include "ch4/pair_scene.h"
 #include "contact/gjk.h"
+#include "language/language.h"
 
 namespace lamina::ch4 {
 namespace {
@@ -60,40 +61,41 @@ class Gjk : public PairScene {
   std::string reduction(int k) const {
     const Simplex before = unreduced(k), after = record_[static_cast<std::size_t>(k - 1)].simplex;
     if (before.count == after.count)
-      return "The simplex {" + names_of(after) + "} keeps its points";
-    return "The simplex {" + names_of(before) + "} is cut to {" + names_of(after) + "}";
+      return fill(tr("The simplex {{0}} keeps its points"), {names_of(after)});
+    return fill(tr("The simplex {{0}} is cut to {{1}}"), {names_of(before), names_of(after)});
   }
   std::string verdict(int k) const {
     const GjkIteration& it = record_[static_cast<std::size_t>(k - 1)];
-    if (repeats(k)) return "stop: s was in the simplex";
-    if (progress(it) <= 1e-10 * it.closest.squaredNorm()) return "stop: s is no nearer";
-    return "go on: s joins the simplex";
+    if (repeats(k)) return tr("stop: s was in the simplex");
+    if (progress(it) <= 1e-10 * it.closest.squaredNorm()) return tr("stop: s is no nearer");
+    return tr("go on: s joins the simplex");
   }
 
   void draw_start(render::Frame& frame) const override {
     const SimplexVertex& w0 = record_[0].simplex.points[0];
     frame.caption =
-        "GJK · the shapes are apart iff O ∉ D = B − A; their distance is min |w| over D";
+        tr("GJK · the shapes are apart iff O ∉ D = B − A; their distance is min |w| over D");
     figure().draw_shapes(frame, &w0, true);
     figure().mark(frame, w0.w, kept, "w = " + point_name(w0));
     frame.panels.push_back(panel(
-        "GJK on a hexagon A and a triangle B",
-        {"A: a₀..a₅, B: b₀..b₂ (world frame)",
-         "D = hull of the " + std::to_string(figure().difference_count()) +
-             " points b_j − a_i: " + std::to_string(figure().difference().size()) + " vertices",
-         "each iteration asks D for s_D(d) = s_B(d) − s_A(−d):",
-         "B's vertex farthest along d minus A's along −d",
-         "start: w = b₀ − a₀ = " + planar(w0.w) + " m"}));
-    frame.legend = {{Sample::swatch, d_fill, "D = B − A (Minkowski difference)"},
-                    {Sample::point, kept, "GJK's simplex: points of D"},
-                    {Sample::arrow, added, "b_j − a_i: a point of D"}};
+        tr("GJK on a hexagon A and a triangle B"),
+        {tr("A: a₀..a₅, B: b₀..b₂ (world frame)"),
+         fill(tr("D = hull of the {0} points b_j − a_i: {1} vertices"),
+              {std::to_string(figure().difference_count()),
+               std::to_string(figure().difference().size())}),
+         tr("each iteration asks D for s_D(d) = s_B(d) − s_A(−d):"),
+         tr("B's vertex farthest along d minus A's along −d"),
+         fill(tr("start: w = b₀ − a₀ = {0} m"), {planar(w0.w)})}));
+    frame.legend = {{Sample::swatch, d_fill, tr("D = B − A (Minkowski difference)")},
+                    {Sample::point, kept, tr("GJK's simplex: points of D")},
+                    {Sample::arrow, added, tr("b_j − a_i: a point of D")}};
   }
 
   void draw_iteration(render::Frame& frame, int k) const override {
     const GjkIteration& it = record_[static_cast<std::size_t>(k - 1)];
     const Simplex before = unreduced(k);
-    frame.caption = "GJK iteration " + std::to_string(k) +
-                    " · the simplex's point w nearest O, then D's support point along −w";
+    frame.caption = fill(tr("GJK iteration {0} · the simplex's point w nearest O, then D's support point along −w"),
+                         {std::to_string(k)});
     figure().draw_shapes(frame, &it.support, true);
     if (before.count > it.simplex.count)
       figure().stroke(frame, points_of(before), palette::grey, true, true);
@@ -102,7 +104,7 @@ class Gjk : public PairScene {
       const bool dropped =
           std::none_of(it.simplex.points.begin(), it.simplex.points.begin() + it.simplex.count,
                        [&](const SimplexVertex& p) { return p.w == v.w; });
-      if (dropped) figure().mark(frame, v.w, palette::grey, point_name(v) + " dropped");
+      if (dropped) figure().mark(frame, v.w, palette::grey, fill(tr("{0} dropped"), {point_name(v)}));
     }
     draw_simplex(frame, figure(), it.simplex);
     figure().mark(frame, it.closest, nearest, "w");
@@ -117,28 +119,29 @@ class Gjk : public PairScene {
     const double lower = it.closest.dot(it.support.w) / w;  // w·s/|w| ≤ the distance
     frame.panels.push_back(panel(
         iteration_title(k),
-        {"simplex " + names_of(it.simplex) +
-             (before.count > it.simplex.count ? " (cut from " + std::to_string(before.count) + ")"
-                                              : ""),
+        {before.count > it.simplex.count
+             ? fill(tr("simplex {0} (cut from {1})"),
+                    {names_of(it.simplex), std::to_string(before.count)})
+             : fill(tr("simplex {0}"), {names_of(it.simplex)}),
          "w = " + planar(it.closest) + " m, |w| = " + fixed(w, 4) + " m",
          "d = −w/|w| = " + planar(it.direction),
          "s = s_D(d) = " + point_name(it.support) + " = " + planar(it.support.w) + " m",
          "w·w − w·s = " + fixed(progress(it), 4) + " m²: " + verdict(k),
-         "distance in [w·s/|w|, |w|] = [" + fixed(std::max(0.0, lower), 4) + ", " + fixed(w, 4) +
-             "] m"}));
+         fill(tr("distance in [w·s/|w|, |w|] = [{0}, {1}] m"),
+              {fixed(std::max(0.0, lower), 4), fixed(w, 4)})}));
     frame.legend = {{Sample::swatch, d_fill, "D = B − A"},
-                    {Sample::point, kept, "simplex"},
-                    {Sample::point, nearest, "w: its point nearest O"},
-                    {Sample::arrow, palette::ink, "−w: the search direction"},
-                    {Sample::point, added, "s = s_D(−w) = b_j − a_i, added"}};
+                    {Sample::point, kept, tr("simplex")},
+                    {Sample::point, nearest, tr("w: its point nearest O")},
+                    {Sample::arrow, palette::ink, tr("−w: the search direction")},
+                    {Sample::point, added, tr("s = s_D(−w) = b_j − a_i, added")}};
     if (before.count > it.simplex.count) {
       frame.legend.insert(frame.legend.begin() + 2,
-                          {Sample::dashed_line, palette::grey, "before the reduction"});
+                          {Sample::dashed_line, palette::grey, tr("before the reduction")});
     }
   }
 
   void draw_answer(render::Frame& frame) const override {
-    frame.caption = "GJK's answer · the distance |w| and the closest points a, b (w = b − a)";
+    frame.caption = tr("GJK's answer · the distance |w| and the closest points a, b (w = b − a)");
     figure().draw_shapes(frame, nullptr, false);
     const Vec2 a = result_.point_a, b = result_.point_b;
     frame.paths3.push_back({{lift(a), lift(b)}, palette::ink, true});
@@ -152,18 +155,18 @@ class Gjk : public PairScene {
     const Vec2 w = b - a;
     frame.arrows.push_back({figure().at(Vec2::Zero()), figure().at(w), nearest, "w", std::nullopt});
     frame.panels.push_back(
-        panel("GJK ends after " + std::to_string(iterations()) + " iterations",
+        panel(fill(tr("GJK ends after {0} iterations"), {std::to_string(iterations())}),
               {
-                  "iteration " + std::to_string(iterations()) + ": " + verdict(iterations()),
-                  "distance = |w| = " + fixed(result_.distance, 4) + " m",
-                  "a = " + planar(a) + " m on " + feature(0),
-                  "b = " + planar(b) + " m on " + feature(1),
+                  fill(tr("iteration {0}: {1}"), {std::to_string(iterations()), verdict(iterations())}),
+                  fill(tr("distance = |w| = {0} m"), {fixed(result_.distance, 4)}),
+                  fill(tr("a = {0} m on {1}"), {planar(a), feature(0)}),
+                  fill(tr("b = {0} m on {1}"), {planar(b), feature(1)}),
                   "n = (b − a)/|b − a| = " + planar(result_.normal),
-                  "narrow phase: " + fixed(result_.distance, 4) + " m > ρ_A + ρ_B = 0: apart",
+                  fill(tr("narrow phase: {0} m > ρ_A + ρ_B = 0: apart"), {fixed(result_.distance, 4)}),
               }));
     frame.legend = {{Sample::swatch, d_fill, "D = B − A"},
-                    {Sample::point, kept, "the last simplex"},
-                    {Sample::arrow, nearest, "w = b − a, D's point nearest O"}};
+                    {Sample::point, kept, tr("the last simplex")},
+                    {Sample::arrow, nearest, tr("w = b − a, D's point nearest O")}};
   }
 
   // The feature of A (0) or B (1) its closest point lies on: a vertex, or an edge when the last
@@ -178,13 +181,13 @@ class Gjk : public PairScene {
     }
     const char name = body == 0 ? 'a' : 'b';
     if (indices.size() == 1)
-      return std::string(body == 0 ? "A" : "B") + "'s vertex " + vertex_name(name, indices[0]);
-    return std::string(body == 0 ? "A" : "B") + "'s edge " + vertex_name(name, indices[0]) +
-           vertex_name(name, indices[1]);
+      return fill(tr("{0}'s vertex {1}"), {body == 0 ? "A" : "B", vertex_name(name, indices[0])});
+    return fill(tr("{0}'s edge {1}"), {body == 0 ? "A" : "B",
+                                       vertex_name(name, indices[0]) + vertex_name(name, indices[1])});
   }
 
   tutorial::Section explain_start() const override {
-    return {"GJK: A and B apart, and D = B − A", start_quantities()};
+    return {tr("GJK: A and B apart, and D = B − A"), start_quantities()};
   }
 
   std::vector<tutorial::Quantity> start_quantities() const {
@@ -194,54 +197,53 @@ class Gjk : public PairScene {
     std::vector<Vec2> b(figure().b().vertices.begin(),
                         figure().b().vertices.begin() + figure().b().count);
     return {
-        {"in words", "", "the step",
-         "D = B − A is the hull of the " + std::to_string(figure().difference_count()) +
-             " differences b_j − a_i; A and B are apart iff O is outside D, and their distance is "
-             "D's least |w|. GJK starts from w = b₀ − a₀ = " +
-             planar(w0.w) + " m.",
+        {tr("in words"), "", tr("the step"),
+         fill(tr("D = B − A is the hull of the {0} differences b_j − a_i; A and B are apart iff O is "
+                 "outside D, and their distance is D's least |w|. GJK starts from w = b₀ − a₀ = {1} m."),
+              {std::to_string(figure().difference_count()), planar(w0.w)}),
          ""},
-        {"a_i", "", "A's vertices (a hexagon), world frame", rows_of(a), "m"},
-        {"b_j", "", "B's vertices (a triangle), world frame", rows_of(b), "m"},
-        {"D", "", "the vertices of D = B − A, counter-clockwise", rows_of(figure().difference()),
+        {"a_i", "", tr("A's vertices (a hexagon), world frame"), rows_of(a), "m"},
+        {"b_j", "", tr("B's vertices (a triangle), world frame"), rows_of(b), "m"},
+        {"D", "", tr("the vertices of D = B − A, counter-clockwise"), rows_of(figure().difference()),
          "m"},
-        {"w", "", "GJK's first point, b₀ − a₀", json_of(w0.w), "m"}};
+        {"w", "", tr("GJK's first point, b₀ − a₀"), json_of(w0.w), "m"}};
   }
 
   std::vector<tutorial::Quantity> iteration_quantities(int k) const override {
     const GjkIteration& it = record_[static_cast<std::size_t>(k - 1)];
     const double w = it.closest.norm();
     return {
-        {"in words", "", "the step",
-         reduction(k) + ", whose point nearest O is w = " + planar(it.closest) +
-             " m (|w| = " + fixed(w, 4) + " m). Along d = −w/|w| D's support point is s = " +
-             point_name(it.support) + " = " + planar(it.support.w) +
-             " m; w·w − w·s = " + fixed(progress(it), 4) + " m²: " + verdict(k) + ".",
+        {tr("in words"), "", tr("the step"),
+         fill(tr("{0}, whose point nearest O is w = {1} m (|w| = {2} m). Along d = −w/|w| D's support "
+                 "point is s = {3} = {4} m; w·w − w·s = {5} m²: {6}."),
+              {reduction(k), planar(it.closest), fixed(w, 4), point_name(it.support),
+               planar(it.support.w), fixed(progress(it), 4), verdict(k)}),
          ""},
-        {"simplex", "", "its points after the reduction", rows_of(points_of(it.simplex)), "m"},
-        {"w", "", "the simplex's point nearest O", json_of(it.closest), "m"},
-        {"|w|", "", "an upper bound on the distance", w, "m"},
-        {"d", "", "the search direction −w/|w|", json_of(it.direction), ""},
-        {"s_A(−d)", "", "A's vertex farthest along −d, " + vertex_name('a', it.support.index_a),
+        {tr("simplex"), "", tr("its points after the reduction"), rows_of(points_of(it.simplex)), "m"},
+        {"w", "", tr("the simplex's point nearest O"), json_of(it.closest), "m"},
+        {"|w|", "", tr("an upper bound on the distance"), w, "m"},
+        {"d", "", tr("the search direction −w/|w|"), json_of(it.direction), ""},
+        {"s_A(−d)", "", fill(tr("A's vertex farthest along −d, {0}"), {vertex_name('a', it.support.index_a)}),
          json_of(it.support.a), "m"},
-        {"s_B(d)", "", "B's vertex farthest along d, " + vertex_name('b', it.support.index_b),
+        {"s_B(d)", "", fill(tr("B's vertex farthest along d, {0}"), {vertex_name('b', it.support.index_b)}),
          json_of(it.support.b), "m"},
-        {"s", "", "s_D(d) = s_B(d) − s_A(−d), the point added", json_of(it.support.w), "m"},
-        {"w·w − w·s", "", "how much nearer s brings the simplex (stop at ≤ 1e-10 |w|²)",
+        {"s", "", tr("s_D(d) = s_B(d) − s_A(−d), the point added"), json_of(it.support.w), "m"},
+        {"w·w − w·s", "", tr("how much nearer s brings the simplex (stop at ≤ 1e-10 |w|²)"),
          progress(it), "m²"},
-        {"w·s/|w|", "", "a lower bound on the distance", it.closest.dot(it.support.w) / w, "m"}};
+        {"w·s/|w|", "", tr("a lower bound on the distance"), it.closest.dot(it.support.w) / w, "m"}};
   }
 
   std::vector<tutorial::Quantity> answer_quantities() const override {
-    return {{"in words", "", "the result",
-             "After " + std::to_string(iterations()) + " iterations (" + verdict(iterations()) +
-                 ") the distance is " + fixed(result_.distance, 4) + " m between a on " +
-                 feature(0) + " and b on " + feature(1) + ".",
+    return {{tr("in words"), "", tr("the result"),
+             fill(tr("After {0} iterations ({1}) the distance is {2} m between a on {3} and b on {4}."),
+                  {std::to_string(iterations()), verdict(iterations()), fixed(result_.distance, 4),
+                   feature(0), feature(1)}),
              ""},
-            {"distance", "", "|w| = |b − a|", result_.distance, "m"},
-            {"a", "", "A's point nearest B", json_of(result_.point_a), "m"},
-            {"b", "", "B's point nearest A", json_of(result_.point_b), "m"},
-            {"n", "", "(b − a)/|b − a|, from A to B", json_of(result_.normal), ""},
-            {"iterations", "", "support points asked for", result_.iterations, ""}};
+            {tr("distance"), "", "|w| = |b − a|", result_.distance, "m"},
+            {"a", "", tr("A's point nearest B"), json_of(result_.point_a), "m"},
+            {"b", "", tr("B's point nearest A"), json_of(result_.point_b), "m"},
+            {"n", "", tr("(b − a)/|b − a|, from A to B"), json_of(result_.normal), ""},
+            {tr("iterations"), "", tr("support points asked for"), result_.iterations, ""}};
   }
 
   std::vector<GjkIteration> record_;  // GJK's iterations, as gjk() recorded them

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "constraints/step_settings.h"
+#include "language/language.h"
 
 namespace lamina::ch4 {
 namespace {
@@ -31,7 +32,7 @@ void PairScene::draw(render::Frame& frame) const {
 tutorial::Explanation PairScene::explain() const {
   const int k = shown();
   if (k == 0) return {explain_start()};
-  if (k == last()) return {{algorithm_ + "'s answer", answer_quantities()}};
+  if (k == last()) return {{fill(tr("{0}'s answer"), {algorithm_}), answer_quantities()}};
   return {{iteration_title(k), iteration_quantities(k)}};
 }
 
@@ -40,9 +41,9 @@ std::string PairScene::iteration_title(int k) const { return algorithm_ + " " + 
 int PairScene::shown() const { return static_cast<int>(std::min<long>(frame_, last())); }
 
 std::string PairScene::moment(int k) const {
-  if (k == 0) return "the start";
-  if (k == last()) return "the answer";
-  return "iteration " + std::to_string(k) + " of " + std::to_string(iterations());
+  if (k == 0) return tr("the start");
+  if (k == last()) return tr("the answer");
+  return fill(tr("iteration {0} of {1}"), {std::to_string(k), std::to_string(iterations())});
 }
 
 }  // namespace lamina::ch4

@@ -8,6 +8,7 @@
 #include "app/harness/format.h"
 #include "app/reference/box2d_lab.h"
 #include "beyond/methods.h"
+#include "language/language.h"
 #include "scene/builtin_scenes.h"
 #include "output/output_file.h"
 
@@ -42,15 +43,15 @@ std::string numbers(const TableScene& scene, const LabRun& r) {
 const std::vector<TableScene>& table_scenes() {
   static const std::vector<TableScene> list = {
       {"heavy-on-light:100", "heavy_on_light_100", {Vec2(-2.2, -0.4), Vec2(2.2, 2.4)},
-       "overlap / sideways (mm)"},
+       msg("overlap / sideways (mm)")},
       {"heavy-on-light:1000", "heavy_on_light_1000", {Vec2(-2.2, -0.4), Vec2(2.2, 2.4)},
-       "overlap / sideways (mm)"},
+       msg("overlap / sideways (mm)")},
       {"vertical-stack:20", "vertical_stack_20", {Vec2(-7.0, -0.5), Vec2(7.0, 21.5)},
-       "top sway / top height change (mm)"},
+       msg("top sway / top height change (mm)")},
       {"ball-and-chain:100", "ball_and_chain_100", {Vec2(-6.5, -0.5), Vec2(6.5, 11.0)},
-       "largest stretch (%)"},
+       msg("largest stretch (%)")},
       {"pyramid:20", "pyramid_20", {Vec2(-11.0, -0.5), Vec2(11.0, 21.5)},
-       "apex moved / any box sideways (m)"},
+       msg("apex moved / any box sideways (m)")},
   };
   return list;
 }
@@ -83,15 +84,15 @@ const std::vector<LabRun>& lab_runs(const TableScene& scene) {
 const std::vector<PitfallDemo>& pitfall_demos() {
   const render::Rect stack{Vec2(-3.0, -0.5), Vec2(3.0, 5.8)};
   static const std::vector<PitfallDemo> list = {
-      {Pitfall::lambda_b1, "vertical-stack:5", "pgs", "lambda_b1", stack, "top box moved (m)"},
+      {Pitfall::lambda_b1, "vertical-stack:5", "pgs", "lambda_b1", stack, msg("top box moved (m)")},
       {Pitfall::no_renormalisation, "spinning-box", "pgs", "no_renormalisation",
-       {Vec2(-3.0, -0.5), Vec2(3.0, 5.0)}, "box moved (m)"},
-      {Pitfall::clamp_increment, "vertical-stack:5", "pgs", "clamp_increment", stack, "top box moved (m)"},
-      {Pitfall::no_warm_start, "vertical-stack:5", "pgs", "no_warm_start", stack, "top box moved (m)"},
+       {Vec2(-3.0, -0.5), Vec2(3.0, 5.0)}, msg("box moved (m)")},
+      {Pitfall::clamp_increment, "vertical-stack:5", "pgs", "clamp_increment", stack, msg("top box moved (m)")},
+      {Pitfall::no_warm_start, "vertical-stack:5", "pgs", "no_warm_start", stack, msg("top box moved (m)")},
       {Pitfall::crude_friction, "friction-ramp", "pgs", "crude_friction",
-       {Vec2(-9.5, -5.8), Vec2(9.5, 6.0)}, "box moved (m)"},
+       {Vec2(-9.5, -5.8), Vec2(9.5, 6.0)}, msg("box moved (m)")},
       {Pitfall::baumgarte_no_slop, "vertical-stack:5", "pgs", "baumgarte_no_slop", stack,
-       "top box moved (m)"},
+       msg("top box moved (m)")},
   };
   return list;
 }
@@ -125,33 +126,61 @@ const std::vector<LabRun>& pitfall_runs(const PitfallDemo& demo) {
   return found;
 }
 
-std::string table_cell(const TableScene& scene, const LabRun& run) {
-  return std::string(meets_bars(scene, run) ? "✓ " : "✗ ") + numbers(scene, run);
+std::string table_cell(const TableScene& scene, const LabRun& run, bool shown) {
+  return std::string(meets_bars(scene, run) ? "✓ " : "✗ ") +
+         (shown && run.diverged ? std::string(tr("diverged")) : numbers(scene, run));
 }
 
 std::string bars(const TableScene& scene) {
-  if (scene.scene == "heavy-on-light:100") return "overlap ≤ 10 mm, no box 5 mm sideways";
-  if (scene.scene == "heavy-on-light:1000") return "overlap ≤ 20 mm";
-  if (scene.scene == "vertical-stack:20") return "top sways ≤ 10 mm, ends within 20 mm of its height";
-  if (scene.scene == "ball-and-chain:100") return "pin to ball ≤ 1 % past its rest length";
-  return "apex within 0.2 m, no box 0.1 m sideways";
+  if (scene.scene == "heavy-on-light:100") return msg("overlap ≤ 10 mm, no box 5 mm sideways");
+  if (scene.scene == "heavy-on-light:1000") return msg("overlap ≤ 20 mm");
+  if (scene.scene == "vertical-stack:20") return msg("top sways ≤ 10 mm, ends within 20 mm of its height");
+  if (scene.scene == "ball-and-chain:100") return msg("pin to ball ≤ 1 % past its rest length");
+  return msg("apex within 0.2 m, no box 0.1 m sideways");
 }
+
+std::string scene_title(const std::string& scene) {
+  // the names of the scenes the lab shows, as messages (their Korean in ch6.po)
+  static const char* const names[] = {msg("heavy-on-light"), msg("vertical-stack"),
+                                      msg("ball-and-chain"),  msg("pyramid"),
+                                      msg("spinning-box"),    msg("friction-ramp")};
+  const std::string family = scene.substr(0, scene.find(':'));
+  for (const char* name : names) {
+    if (family == name) return tr(name) + scene.substr(family.size());
+  }
+  return scene;
+}
+
+std::string shown(const std::string& english) { return tr(english.c_str()); }
+
+namespace {
+
+std::size_t text_width(const std::string& s) {
+  // in a monospaced face's cells: count UTF-8 lead bytes, not bytes (✓, ✗ are three bytes
+  // each), and a Hangul syllable (U+AC00..U+D7A3, lead byte 0xEA..0xED) as two cells
+  std::size_t cells = 0;
+  for (const char c : s) {
+    const unsigned char b = static_cast<unsigned char>(c);
+    if ((b & 0xC0) != 0x80) cells += b >= 0xEA && b <= 0xED ? 2 : 1;
+  }
+  return cells;
+}
+
+}  // namespace
 
 std::vector<std::string> table_lines() {
   const std::size_t name_width = 13, cell_width = 21;
   auto pad = [](std::string s, std::size_t width) {
-    // width in characters: count UTF-8 lead bytes, not bytes (✓, ✗ are three bytes each)
-    std::size_t chars = 0;
-    for (const char c : s) chars += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
-    if (chars < width) s += std::string(width - chars, ' ');
+    const std::size_t cells = text_width(s);
+    if (cells < width) s += std::string(width - cells, ' ');
     return s;
   };
   std::vector<std::string> lines(2);
   lines[0] = pad("", name_width);
-  for (const TableScene& s : table_scenes()) lines[0] += pad(s.scene, cell_width);
+  for (const TableScene& s : table_scenes()) lines[0] += pad(scene_title(s.scene), cell_width);
   for (std::size_t c = 0; c < contenders().size(); ++c) {
     std::string line = pad(contenders()[c].name, name_width);
-    for (const TableScene& s : table_scenes()) line += pad(table_cell(s, lab_runs(s)[c]), cell_width);
+    for (const TableScene& s : table_scenes()) line += pad(table_cell(s, lab_runs(s)[c], true), cell_width);
     lines.push_back(line);
   }
   return lines;

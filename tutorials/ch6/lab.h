@@ -39,10 +39,17 @@ const std::vector<Contender>& contenders();
 // kept for the rest of the process.
 const std::vector<LabRun>& lab_runs(const TableScene& scene);
 
-// A run's cell of the table: "✓" or "✗" against the scene's bars, then its numbers.
-std::string table_cell(const TableScene& scene, const LabRun& run);
-// The bars of Lamina's own method on the scene, in words.
+// A run's cell of the table: "✓" or "✗" against the scene's bars, then its numbers; `shown`:
+// as a frame shows it, in the frame's language (solver_table.md keeps the English).
+std::string table_cell(const TableScene& scene, const LabRun& run, bool shown = false);
+// The bars of Lamina's own method on the scene, in words (English, as solver_table.md has them).
 std::string bars(const TableScene& scene);
+
+// A built-in scene's name (NAME or NAME:P) as a frame or plot shows it, in the frame's language.
+std::string scene_title(const std::string& scene);
+// One of this file's English texts (a column's measure, a scene's bars, a demo's measure) in the
+// frame's language.
+std::string shown(const std::string& english);
 
 // A pitfall (motion/pitfalls.h) shown on a scene where it breaks what the engine holds: the
 // same run with and without it.

@@ -10,6 +10,7 @@
 #include "app/views/contact/world_view.h"
 #include "app/views/contact/world_explanation.h"
 #include "beyond/methods.h"
+#include "language/language.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
 
@@ -50,9 +51,15 @@ class Overlay : public tutorial::Scene {
     }
     render::Panel panel;
     panel.corner = render::Corner::top_left;
-    panel.title = "largest so far: " + c_.measure;
+    panel.title = fill(tr("largest so far: {0}"), {c_.measure});
     std::size_t width = 0;
-    for (const Contender& who : c_.who) width = std::max(width, who.name.size());
+    // in characters: a name in Korean has three bytes a syllable
+    const auto characters = [](const std::string& s) {
+      std::size_t n = 0;
+      for (const char c : s) n += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+      return n;
+    };
+    for (const Contender& who : c_.who) width = std::max(width, characters(who.name));
     for (std::size_t r = 0; r < runs.size(); ++r) {
       const LabRun& run = runs[r];
       const Contender& who = c_.who[r];
@@ -66,10 +73,9 @@ class Overlay : public tutorial::Scene {
       frame.legend.push_back({render::LegendEntry::Sample::swatch, who.colour, who.name});
       double most = 0.0;  // over the samples up to the state shown
       for (std::size_t i = 0; i < k; ++i) most = std::max(most, c_.followed(run.samples[i]));
-      std::string line = who.name;
-      line.resize(width + 2, ' ');
+      std::string line = who.name + std::string(width + 2 - characters(who.name), ' ');
       const bool gone = run.diverged && static_cast<std::size_t>(step_) >= run.poses.size();
-      panel.lines.push_back(line + (gone ? "diverged" : fixed(most, 3)));
+      panel.lines.push_back(line + (gone ? std::string(tr("diverged")) : fixed(most, 3)));
     }
     frame.panels.push_back(panel);
     frame.legend_corner = render::Corner::top_right;
@@ -88,10 +94,11 @@ class Overlay : public tutorial::Scene {
   void write_data(const std::filesystem::path& folder) const override {
     const std::vector<LabRun>& runs = c_.runs();
     tutorial::Plot plot{c_.stem,
-                        c_.scene.name + ": " + c_.measure + ", 60 Hz" +
-                            (c_.log_plot ? " (below 1 µm drawn at 1 µm)" : ""),
+                        scene_title(c_.scene.name) + ": " + c_.measure + ", 60 Hz" +
+                            (c_.log_plot ? tr(" (below 1 µm drawn at 1 µm)") : ""),
                         "t (s)", c_.measure, {}, {}, c_.legend, c_.log_plot};
-    tutorial::Plot energy{c_.stem + "_energy", c_.scene.name + ": mechanical energy, 60 Hz",
+    tutorial::Plot energy{c_.stem + "_energy",
+                          fill(tr("{0}: mechanical energy, 60 Hz"), {scene_title(c_.scene.name)}),
                           "t (s)", "E (J)", {}, {}, "bottom left"};
     for (const Contender& who : c_.who) {
       plot.series.push_back({who.name, who.colour, who.name == "islands"});
@@ -145,14 +152,15 @@ class Overlay : public tutorial::Scene {
 
 }  // namespace
 
-tutorial::SceneFactory overlay_scene(Comparison comparison) {
-  return [comparison](const tutorial::Options&) { return std::make_unique<Overlay>(comparison); };
+tutorial::SceneFactory overlay_scene(std::function<Comparison()> make) {
+  return [make](const tutorial::Options&) { return std::make_unique<Overlay>(make()); };
 }
 
 Comparison table_comparison(const TableScene& s) {
   Comparison c;
   c.stem = s.stem;
-  c.caption = "Chapter 6 · " + s.scene + " by Box2D 2.4.1 and each of Lamina's methods, overlaid";
+  c.caption = fill(tr("Chapter 6 · {0} by Box2D 2.4.1 and each of Lamina's methods, overlaid"),
+                   {scene_title(s.scene)});
   c.scene = builtin_scene(s.scene);
   c.explained = c.scene;
   c.explained.solver = default_method;  // Lamina's own
@@ -163,9 +171,9 @@ Comparison table_comparison(const TableScene& s) {
   const bool chain = s.scene == "ball-and-chain:100";
   // the chain's ball swings up to the pin's height on both sides: room above it for the numbers
   if (chain) c.headroom = 2.0;
-  c.measure = heavy ? "deepest overlap (mm)"
-              : chain ? "pin to ball past its rest length (%)"
-              : s.scene == "vertical-stack:20" ? "top box moved (m)" : "apex moved (m)";
+  c.measure = heavy ? tr("deepest overlap (mm)")
+              : chain ? tr("pin to ball past its rest length (%)")
+              : s.scene == "vertical-stack:20" ? tr("top box moved (m)") : tr("apex moved (m)");
   c.followed = heavy ? [](const LabSample& x) { return 1000.0 * x.overlap; }
                : chain ? [](const LabSample& x) { return 100.0 * x.stretch; }
                : [](const LabSample& x) { return x.top; };
@@ -183,13 +191,13 @@ Comparison pitfall_comparison(const PitfallDemo& demo) {
   c.scene = demo_scene(demo);
   c.explained = c.scene;
   c.explained.step.pitfalls.add(demo.pitfall);  // what the mistake computes
-  c.caption = "Chapter 6 · pitfall " + pitfall_name(demo.pitfall) + " on " + c.scene.name + ": " +
-              demo.method + " as it is, and with the mistake";
+  c.caption = fill(tr("Chapter 6 · pitfall {0} on {1}: {2} as it is, and with the mistake"),
+                   {pitfall_name(demo.pitfall), scene_title(c.scene.name), demo.method});
   c.view = demo.view;
-  c.who = {{demo.method + " as it is", render::palette::bluish_green},
-           {"with " + pitfall_name(demo.pitfall), render::palette::vermillion}};
+  c.who = {{fill(tr("{0} as it is"), {demo.method}), render::palette::bluish_green},
+           {fill(tr("with {0}"), {pitfall_name(demo.pitfall)}), render::palette::vermillion}};
   c.runs = [demo]() -> const std::vector<LabRun>& { return pitfall_runs(demo); };
-  c.measure = demo.measure;
+  c.measure = shown(demo.measure);
   c.followed = [](const LabSample& x) { return x.top; };
   c.log_plot = true;
   c.floor = 1e-6;

@@ -31,7 +31,9 @@ struct Comparison {
   std::string legend = "top right";   // where the plot's legend sits
 };
 
-tutorial::SceneFactory overlay_scene(Comparison comparison);
+// `make` is called when the scene is made, after the options have set the language: the
+// comparison's captions, measure and names are in the frames' language.
+tutorial::SceneFactory overlay_scene(std::function<Comparison()> make);
 
 // Each scene of the table, every contender's run of it.
 Comparison table_comparison(const TableScene& scene);

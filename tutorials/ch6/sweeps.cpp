@@ -11,8 +11,10 @@
 #include "app/views/contact/world_explanation.h"
 #include "app/views/contact/world_view.h"
 #include "beyond/block_method.h"
+#include "ch6/lab.h"
 #include "constraints/exact_mlcp.h"
 #include "constraints/pgs_solver.h"
+#include "language/language.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
 
@@ -73,12 +75,13 @@ class Sweeps : public tutorial::Scene {
 
   void draw(render::Frame& frame) const override {
     frame = view::world_frame(world_.world(), world_.bodies_at_t());
-    frame.caption = "Chapter 6 · one step's λ after n sweeps, against the exact λ* (Lemke) · heavy-on-light:1000";
+    frame.caption = fill(tr("Chapter 6 · one step's λ after n sweeps, against the exact λ* (Lemke) · {0}"),
+                         {scene_title("heavy-on-light:1000")});
     frame.force_scale = 0.8 / 9800.0;  // the heavy box's weight, 9800 N, drawn 0.8 m long
     const SweepErrors e = sweep_errors(world_.report().velocity);
     render::Panel p;
     p.corner = render::Corner::top_left;
-    p.title = "max |λ − λ*| after n sweeps from λ = 0 (N)";
+    p.title = tr("max |λ − λ*| after n sweeps from λ = 0 (N)");
     p.lines.push_back("    n   pgs        block");
     if (e.exact) {
       for (const int n : {1, 3, 10, 30, 100, 300, 1000}) {
@@ -87,23 +90,23 @@ class Sweeps : public tutorial::Scene {
         p.lines.push_back(count + "   " + scientific(e.pgs[n - 1]) + "    " + scientific(e.block[n - 1]));
       }
     } else {
-      p.lines.push_back("  (Lemke found no λ* for this step)");
+      p.lines.push_back(tr("  (Lemke found no λ* for this step)"));
     }
     frame.panels.push_back(p);
     frame.legend_corner = render::Corner::top_right;
     const std::vector<RigidBody>& at_t = world_.bodies_at_t();
-    frame.labels.push_back({at_t[1].x.head<2>() + Vec2(0.65, 0.0), "light: 1 kg", render::palette::ink});
-    frame.labels.push_back({at_t[2].x.head<2>() + Vec2(0.65, 0.0), "heavy: 1000 kg", render::palette::ink});
+    frame.labels.push_back({at_t[1].x.head<2>() + Vec2(0.65, 0.0), tr("light: 1 kg"), render::palette::ink});
+    frame.labels.push_back({at_t[2].x.head<2>() + Vec2(0.65, 0.0), tr("heavy: 1000 kg"), render::palette::ink});
   }
 
   tutorial::Explanation explain() const override {
-    return view::explain_world_step(world_.world(), world_.report(), {"ground", "light", "heavy"});
+    return view::explain_world_step(world_.world(), world_.report(), {tr("ground"), tr("light"), tr("heavy")});
   }
 
   void write_data(const std::filesystem::path& folder) const override {
     tutorial::Plot plot{"lambda_error",
-                        "One resting step's MLCP: max |λ − λ*| after n sweeps from λ = 0",
-                        "sweeps n", "max |λ − λ*| (N)", {}, {}, "bottom left", true};
+                        tr("One resting step's MLCP: max |λ − λ*| after n sweeps from λ = 0"),
+                        tr("sweeps n"), "max |λ − λ*| (N)", {}, {}, "bottom left", true};
     std::vector<SweepErrors> errors;
     for (const char* name : {"heavy-on-light:1000", "vertical-stack:20"}) {
       World world = world_of(name);
@@ -111,8 +114,8 @@ class Sweeps : public tutorial::Scene {
       WorldReport report;
       world.step(report);  // step 60, t = 1 s: resting
       errors.push_back(sweep_errors(report.velocity));
-      plot.series.push_back({std::string("pgs, ") + name, render::palette::orange, errors.size() == 2});
-      plot.series.push_back({std::string("block, ") + name, render::palette::reddish_purple, errors.size() == 2});
+      plot.series.push_back({"pgs, " + scene_title(name), render::palette::orange, errors.size() == 2});
+      plot.series.push_back({"block, " + scene_title(name), render::palette::reddish_purple, errors.size() == 2});
     }
     for (int n = 1; n <= most_sweeps; ++n) {
       std::vector<double> row{static_cast<double>(n)};

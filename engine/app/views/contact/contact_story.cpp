@@ -1,5 +1,7 @@
 #include "app/views/contact/contact_story.h"
 
+#include "language/language.h"
+
 namespace lamina::view {
 
 Fig4Moment fig4_moment(const WorldReport& report, int body, bool touched) {
@@ -22,10 +24,10 @@ Fig4Moment fig4_moment(const WorldReport& report, int body, bool touched) {
 const char* figure_of(Fig4Moment moment) {
   switch (moment) {
     case Fig4Moment::no_contact: return "";
-    case Fig4Moment::first_contact: return "Fig 4-2";
-    case Fig4Moment::one_point: return "Fig 4-3";
-    case Fig4Moment::two_points: return "Fig 4-4";
-    case Fig4Moment::at_rest: return "Fig 4-5";
+    case Fig4Moment::first_contact: return tr("Fig 4-2");
+    case Fig4Moment::one_point: return tr("Fig 4-3");
+    case Fig4Moment::two_points: return tr("Fig 4-4");
+    case Fig4Moment::at_rest: return tr("Fig 4-5");
   }
   return "";
 }

@@ -2,6 +2,7 @@
 
 #include "app/views/constraints/constraint_view.h"
 #include "app/views/motion/body_view.h"
+#include "language/language.h"
 
 namespace lamina::view {
 namespace {
@@ -27,12 +28,14 @@ std::vector<std::string> row_titles(const World& world, const WorldReport& repor
   for (const ContactPair& pair : report.pairs) {
     for (int k = 0; k < pair.count; ++k, ++index) {
       const Contact& c = pair.contacts[k];
-      const std::string bodies = " (" + pair_name(names, pair.bodies) + ")";
-      titles[c.row] = "contact row of contact " + std::to_string(index) + bodies + " (eq. 4-3)";
+      const std::string bodies = pair_name(names, pair.bodies);
+      titles[c.row] =
+          fill(tr("contact row of contact {0} ({1}) (eq. 4-3)"), {std::to_string(index), bodies});
       for (const int f : c.friction_rows) {
         if (f < 0) continue;
         const auto i = static_cast<std::size_t>(f);
-        friction_of[i] += (sharing[i]++ ? " and " : "") + std::to_string(index);
+        friction_of[i] = sharing[i]++ ? fill(tr("{0} and {1}"), {friction_of[i], std::to_string(index)})
+                                      : std::to_string(index);
         friction_pair[i] = bodies;
       }
     }
@@ -44,27 +47,31 @@ std::vector<std::string> row_titles(const World& world, const WorldReport& repor
         const int f = c.friction_rows[static_cast<std::size_t>(axis)];
         if (f < 0) continue;
         const auto i = static_cast<std::size_t>(f);
-        titles[i] = std::string("friction row of ") + (sharing[i] > 1 ? "contacts " : "contact ") +
-                    friction_of[i] + friction_pair[i] + (sharing[i] > 1 ? ", one row at their middle" : "") +
-                    (axis == 0 ? ", along u1 = z × n" : ", along u2 = z");
+        const char* pattern =
+            sharing[i] > 1
+                ? (axis == 0 ? tr("friction row of contacts {0} ({1}), one row at their middle, along u1 = z × n")
+                             : tr("friction row of contacts {0} ({1}), one row at their middle, along u2 = z"))
+                : (axis == 0 ? tr("friction row of contact {0} ({1}), along u1 = z × n")
+                             : tr("friction row of contact {0} ({1}), along u2 = z"));
+        titles[i] = fill(pattern, {friction_of[i], friction_pair[i]});
       }
     }
   }
   for (std::size_t j = 0; j < report.joints.size(); ++j) {
     const RowRange& rows = report.joints[j];
     for (int m = 0; m < rows.count; ++m) {
-      titles[rows.first + m] = "row " + std::to_string(m + 1) + " of " +
-                               std::to_string(rows.count) + " of joint " + std::to_string(j) + " (" +
-                               world.joint(static_cast<int>(j)).kind() + ")";
+      titles[rows.first + m] = fill(tr("row {0} of {1} of joint {2} ({3})"),
+                                    {std::to_string(m + 1), std::to_string(rows.count),
+                                     std::to_string(j), world.joint(static_cast<int>(j)).kind()});
     }
   }
   return titles;
 }
 
 Section body_at_t(const std::string& name, const RigidBody& b, const Vec3& gravity) {
-  Section s = body_section(name + " at t", b, {"", "", "3-5", "3-5"});
-  s.quantities.push_back({"m⁻¹", "5-1", "inverse mass", b.inverse_mass, "1/kg"});
-  s.quantities.push_back({"I⁻¹", "5-1, 2-8", "inverse inertia R I0⁻¹ Rᵀ",
+  Section s = body_section(fill(tr("{0} at t"), {name}), b, {"", "", "3-5", "3-5"});
+  s.quantities.push_back({"m⁻¹", "5-1", tr("inverse mass"), b.inverse_mass, "1/kg"});
+  s.quantities.push_back({"I⁻¹", "5-1, 2-8", tr("inverse inertia R I0⁻¹ Rᵀ"),
                           json_of(b.inverse_inertia_world), "1/(kg·m²)"});
   s.quantities.push_back({"F_ext", "5-2", "m g", json_of(Vec3(b.mass * gravity)), "N"});
   return s;
@@ -72,45 +79,47 @@ Section body_at_t(const std::string& name, const RigidBody& b, const Vec3& gravi
 
 // A fixed body: the text's infinite mass, of which the step uses only the inverses (eq. 5-1).
 Section fixed_body(const std::string& name, const RigidBody& b) {
-  return {name + " (fixed)",
-          {{"x", "", "centre", json_of(b.x), "m"},
-           {"m", "5-1", "mass: infinite", "∞", "kg"},
-           {"m⁻¹", "5-1", "inverse mass", b.inverse_mass, "1/kg"},
-           {"I⁻¹", "5-1", "inverse inertia", json_of(b.inverse_inertia_world), "1/(kg·m²)"}}};
+  return {fill(tr("{0} (fixed)"), {name}),
+          {{"x", "", tr("centre"), json_of(b.x), "m"},
+           {"m", "5-1", tr("mass: infinite"), "∞", "kg"},
+           {"m⁻¹", "5-1", tr("inverse mass"), b.inverse_mass, "1/kg"},
+           {"I⁻¹", "5-1", tr("inverse inertia"), json_of(b.inverse_inertia_world), "1/(kg·m²)"}}};
 }
 
 Section contact_section(int index, const ContactPair& pair, const Contact& c,
                         const std::vector<std::string>& names, double dt) {
   const std::string origin =
       c.origin == ContactOrigin::fresh
-          ? "new: this step's deepest point, no λ from before (Fig 4-2)"
+          ? tr("new: this step's deepest point, no λ from before (Fig 4-2)")
       : c.origin == ContactOrigin::refound
-          ? "re-found: this step's deepest point where a cached point was, warm-started from its λ"
-          : "kept by the cache, re-placed from its anchors (eq. 5-12, Fig 4-4)";
+          ? tr("re-found: this step's deepest point where a cached point was, warm-started from its λ")
+          : tr("kept by the cache, re-placed from its anchors (eq. 5-12, Fig 4-4)");
   Json rows = Json::array({c.row});
   for (int r : c.friction_rows) {
     if (r >= 0) rows.push_back(r);
   }
-  return {"contact " + std::to_string(index) + ": " + pair_name(names, pair.bodies) + ", " + origin,
-          {{"c", "", "contact point, midway between the two surfaces", json_of(lift(c.point)), "m"},
-           {"n", "4-1", "normal, from " + names.at(static_cast<std::size_t>(pair.bodies.first)) +
-                            " into " + names.at(static_cast<std::size_t>(pair.bodies.second)),
+  return {fill(tr("contact {0}: {1}, {2}"), {std::to_string(index), pair_name(names, pair.bodies), origin}),
+          {{"c", "", tr("contact point, midway between the two surfaces"), json_of(lift(c.point)), "m"},
+           {"n", "4-1",
+            fill(tr("normal, from {0} into {1}"),
+                 {names.at(static_cast<std::size_t>(pair.bodies.first)),
+                  names.at(static_cast<std::size_t>(pair.bodies.second))}),
             json_of(lift(c.normal)), ""},
-           {"C", "4-1", "separation (negative: penetrating)", c.separation, "m"},
-           {"rows", "", "its contact row, then its friction rows", rows, ""},
-           {"λ_n", "4-3", "its contact row's λ", c.lambda_normal, "N"},
-           {"λ_n Δt", "", "the normal impulse over the step", c.lambda_normal * dt, "N·s"},
-           {"λ_t", "", "its friction row's λ along u1 = z × n", c.lambda_tangent, "N"}}};
+           {"C", "4-1", tr("separation (negative: penetrating)"), c.separation, "m"},
+           {tr("rows"), "", tr("its contact row, then its friction rows"), rows, ""},
+           {"λ_n", "4-3", tr("its contact row's λ"), c.lambda_normal, "N"},
+           {"λ_n Δt", "", tr("the normal impulse over the step"), c.lambda_normal * dt, "N·s"},
+           {"λ_t", "", tr("its friction row's λ along u1 = z × n"), c.lambda_tangent, "N"}}};
 }
 
 Section joint_section(const World& world, int j, const RowRange& rows,
                       const std::vector<std::string>& names) {
   const Constraint& joint = world.joint(j);
   const std::array<int, 2> bodies = joint.bodies();
-  auto name = [&](int b) { return b < 0 ? std::string("the world") : names.at(static_cast<std::size_t>(b)); };
-  return {"joint " + std::to_string(j) + ": " + joint.kind() + " between " + name(bodies[0]) +
-              " and " + name(bodies[1]),
-          {{"rows", "", "its rows in the velocity MLCP", Json::array({rows.first, rows.first + rows.count - 1}), ""}}};
+  auto name = [&](int b) { return b < 0 ? std::string(tr("the world")) : names.at(static_cast<std::size_t>(b)); };
+  return {fill(tr("joint {0}: {1} between {2} and {3}"),
+               {std::to_string(j), joint.kind(), name(bodies[0]), name(bodies[1])}),
+          {{tr("rows"), "", tr("its rows in the velocity MLCP"), Json::array({rows.first, rows.first + rows.count - 1}), ""}}};
 }
 
 }  // namespace
@@ -143,13 +152,13 @@ Explanation explain_world_step(const World& world, const WorldReport& report,
   }
   const std::vector<std::string> titles = row_titles(world, report, names);
   for (int i = 0; each_row && i < report.velocity.mlcp.row_count(); ++i) {
-    add(row_section(report.velocity, i, "row " + std::to_string(i) + ": " + titles[i], names), "rows");
+    add(row_section(report.velocity, i, fill(tr("row {0}: {1}"), {std::to_string(i), titles[i]}), names), "rows");
   }
-  if (report.velocity.mlcp.row_count() > 0) add(sweeps_section(report.velocity, "PGS (eq. 3-24)"), "solve");
+  if (report.velocity.mlcp.row_count() > 0) add(sweeps_section(report.velocity, tr("PGS (eq. 3-24)")), "solve");
   if (report.position.mlcp.row_count() > 0) {
     Section position = sweeps_section(report.position,
-                                      "split impulse (beyond the text): the position MLCP's PGS");
-    position.quantities.push_back({"λ_p", "", "push-out λ of each contact row",
+                                      tr("split impulse (beyond the text): the position MLCP's PGS"));
+    position.quantities.push_back({"λ_p", "", tr("push-out λ of each contact row"),
                                    json_of(report.position.solution.lambda), "N"});
     add(position, "solve");
   }
@@ -159,10 +168,10 @@ Explanation explain_world_step(const World& world, const WorldReport& report,
   }
   for (std::size_t i = 0; i < at_t.size(); ++i) {
     if (at_t[i].is_static()) continue;
-    add(body_section(names.at(i) + " at t + Δt", world.bodies()[i], {"2-5", "2-6", "2-3", "2-4"}),
+    add(body_section(fill(tr("{0} at t + Δt"), {names.at(i)}), world.bodies()[i], {"2-5", "2-6", "2-3", "2-4"}),
         "integration");
   }
-  if (std::optional<Section> dense = dense_section(report.velocity, at_t, "the dense system (small)")) {
+  if (std::optional<Section> dense = dense_section(report.velocity, at_t, tr("the dense system (small)"))) {
     add(*dense, "solve");
   }
   return e;
@@ -207,7 +216,7 @@ tutorial::ViewerStep viewer_step(const World& world, const WorldReport& report,
     const RowRange& rows = report.joints[j];
     const Constraint& constraint = world.joint(static_cast<int>(j));
     tutorial::ViewerJoint view;
-    view.title = "joint " + std::to_string(j) + ": " + constraint.kind();
+    view.title = fill(tr("joint {0}: {1}"), {std::to_string(j), constraint.kind()});
     if (const std::optional<render::Joint> drawn = joint_view(report.bodies, constraint)) {
       view.x1 = drawn->a.x();
       view.y1 = drawn->a.y();
