@@ -179,7 +179,7 @@ Scene bridge() {
   std::string previous = "left-post";
   for (int i = 0; i < planks; ++i) {
     const std::string name = "plank" + std::to_string(i);
-    bodies.push_back(box(name, {-4.5 + i + 0.5, 3.0}, {0.5, 0.1}));
+    bodies.push_back(box(name, {-4.5 + i, 3.0}, {0.5, 0.1}));  // from x = −5 + i to −4 + i
     joints.push_back(revolute(previous, name, {-5.0 + i, 3.0}));
     previous = name;
   }

@@ -163,8 +163,9 @@ try {
         // a Korean page: its own words (headings, table heads, readouts, notes) have no English
         // left but names (the scene's, its bodies', the method's), a code name (World::step), a
         // file (docs/….md) and the words the frames keep too (language.h, english_words)
-        const text = await evaluate(`[...document.querySelectorAll("h1, h2, th, summary, #keys, #readout, #sweep-readout, #energy, .empty, .note")]
-          .map((e) => e.textContent).join("\\n")`);
+        // and the equations' statements, but for their formulas (code)
+        const text = await evaluate(`[...document.querySelectorAll("h1, h2, th, summary, #keys, #readout, #sweep-readout, #energy, .empty, .note, #equation-list .entry")]
+          .map((e) => { const c = e.cloneNode(true); c.querySelectorAll("code").forEach((code) => code.remove()); return c.textContent; }).join("\\n")`);
         const kept = new Set(["Lamina", "MLCP", "exp", ...runs.flatMap((r) => [r.scene, r.program, ...r.bodies]),
                               ...runs.flatMap((r) => r.detail_of.map((d) => d.method))]);
         const english = (text.replace(/\S+\.md|\w+::\w+/g, "").match(/(?<!\w)[A-Za-z][A-Za-z0-9-]+/g) || []).filter((w) => !kept.has(w));

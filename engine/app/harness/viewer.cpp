@@ -203,7 +203,10 @@ std::size_t ViewerPage::write_page(const std::vector<ViewerRun>& runs, const Sto
   for (const auto& [english, translated] : translations()) {
     if (page.find("t(" + Json(english).dump()) != std::string::npos) messages[english] = translated;
   }
-  data += "],\n\"equations\": " + equation_table_json() + ",\n\"lang\": \"" +
+  // the statements of the text's equations (the-text.md), each in the run's language
+  Json equations = Json::parse(equation_table_json());
+  for (auto& [number, statement] : equations.items()) statement = tr(statement.get<std::string>().c_str());
+  data += "],\n\"equations\": " + equations.dump() + ",\n\"lang\": \"" +
           language_code(current_language()) + "\",\n\"messages\": " + messages.dump() + "};\n";
   renderer.finish();
   write_file_atomically(request_.out / "data.js", data);

@@ -1,8 +1,14 @@
 # Writes viewer_page.cpp: the viewer's index.html as a string, and the equation table of
-# docs/the-text.md ("| 3-16 | statement | cited in |" rows) as a JSON object.
+# docs/the-text.md ("| 3-16 | statement | cited in |" rows of its section "Every numbered
+# equation"; the figures' table above it has rows of the same shape) as a JSON object.
+# tests/language/check_catalogue.cmake reads the same rows: each statement is a message.
 #   cmake -DPAGE=index.html -DTEXT=the-text.md -DOUT=viewer_page.cpp -P embed_page.cmake
 file(READ "${PAGE}" page)
 file(READ "${TEXT}" text)
+string(FIND "${text}" "## Every numbered equation" first)
+string(FIND "${text}" "## Where the text is wrong" last)
+math(EXPR length "${last} - ${first}")
+string(SUBSTRING "${text}" ${first} ${length} text)
 string(REPLACE ";" "<semicolon>" text "${text}")
 string(REPLACE "\n" ";" lines "${text}")
 set(json "{")
