@@ -36,25 +36,10 @@ execute_process(COMMAND xgettext --language=JavaScript --keyword=t --from-code=U
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "xgettext (the viewer's page) failed: ${error}")
 endif()
-# the statements of the text's equations, which the viewer lists (embed_page.cmake reads the same
+# the statements of the text's equations, which the viewer lists (equation_table.cmake reads the
 # rows of docs/the-text.md): each a message, written out as JavaScript t("…") for xgettext
-file(READ "${SOURCE}/docs/the-text.md" text)
-string(FIND "${text}" "## Every numbered equation" first)
-string(FIND "${text}" "## Where the text is wrong" last)
-math(EXPR length "${last} - ${first}")
-string(SUBSTRING "${text}" ${first} ${length} text)
-string(REPLACE ";" "<semicolon>" text "${text}")
-string(REPLACE "\n" ";" lines "${text}")
-set(statements "")
-foreach(line IN LISTS lines)
-  if(line MATCHES "^\\| ([1-5]-[0-9]+) \\| (.*) \\| [^|]*\\|$")
-    set(statement "${CMAKE_MATCH_2}")
-    string(REPLACE "<semicolon>" ";" statement "${statement}")
-    string(REPLACE "\\" "\\\\" statement "${statement}")
-    string(REPLACE "\"" "\\\"" statement "${statement}")
-    string(APPEND statements "t(\"${statement}\");\n")
-  endif()
-endforeach()
+include("${SOURCE}/engine/app/harness/viewer/equation_table.cmake")
+equation_statements("${SOURCE}/docs/the-text.md" json statements)
 file(WRITE "${WORK}/equations.js" "${statements}")
 execute_process(COMMAND xgettext --language=JavaScript --keyword=t --from-code=UTF-8 --no-location
                         --join-existing -o "${WORK}/lamina.pot" "${WORK}/equations.js"
