@@ -30,22 +30,16 @@ math(EXPR first "${first} + 8")
 math(EXPR length "${last} - ${first}")
 string(SUBSTRING "${page}" ${first} ${length} script)
 file(WRITE "${WORK}/viewer.js" "${script}")
-execute_process(COMMAND xgettext --language=JavaScript --keyword=t --from-code=UTF-8 --no-location
-                        --join-existing -o "${WORK}/lamina.pot" "${WORK}/viewer.js"
-                RESULT_VARIABLE status ERROR_VARIABLE error)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "xgettext (the viewer's page) failed: ${error}")
-endif()
 # the statements of the text's equations, which the viewer lists (equation_table.cmake reads the
 # rows of docs/the-text.md): each a message, written out as JavaScript t("…") for xgettext
 include("${SOURCE}/engine/app/harness/viewer/equation_table.cmake")
 equation_statements("${SOURCE}/docs/the-text.md" json statements)
 file(WRITE "${WORK}/equations.js" "${statements}")
 execute_process(COMMAND xgettext --language=JavaScript --keyword=t --from-code=UTF-8 --no-location
-                        --join-existing -o "${WORK}/lamina.pot" "${WORK}/equations.js"
+                        --join-existing -o "${WORK}/lamina.pot" "${WORK}/viewer.js" "${WORK}/equations.js"
                 RESULT_VARIABLE status ERROR_VARIABLE error)
 if(NOT status EQUAL 0)
-  message(FATAL_ERROR "xgettext (the equations' statements) failed: ${error}")
+  message(FATAL_ERROR "xgettext (the viewer's script, the equations' statements) failed: ${error}")
 endif()
 file(STRINGS "${WORK}/lamina.pot" ids ENCODING UTF-8 REGEX "^msgid \".+\"$")
 list(LENGTH ids count)
