@@ -8,10 +8,6 @@
 namespace lamina {
 namespace {
 
-// A vertex inside a box by up to this much less than nothing still counts as inside: the
-// rounding of Rᵀ(p − x) for boxes placed exactly touching, far below any physical margin.
-constexpr double containment_tolerance = 1e-9;  // in m
-
 // A face of a box: its outward normal and its distance from the centre.
 struct Face {
   Vec2 normal;    // n_f, unit, world frame
@@ -67,7 +63,7 @@ FaceTable face_table(const Shape& box, const Pose2& pose, const std::array<Vec2,
 }
 
 // The candidate points of a pair: at most the 4 vertices of each box; no allocation.
-struct Candidates {
+struct BoxCandidates {
   std::array<Collision, 8> items;  // the candidates found
   int count = 0;                   // how many of items are valid
 
@@ -104,7 +100,7 @@ std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, co
     c.reference = ref;
     return c;
   };
-  Candidates candidates;
+  BoxCandidates candidates;
   for (int ref = 0; ref < 2; ++ref) {
     if (tables[ref].separation < separation - tie_tolerance) continue;
     for (int v = 0; v < 4; ++v) {

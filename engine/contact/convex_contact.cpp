@@ -28,10 +28,6 @@ namespace {
 // rounding of a few differences (1e-15); a tilt of 4.5e-5 rad still counts.
 constexpr double face_alignment = 1e-9;
 
-// A point inside the reference shape by this much less than nothing still counts as inside (as
-// box_box.cpp's containment tolerance).
-constexpr double containment_tolerance = 1e-9;  // in m
-
 // A face of a core: a point on it and its outward unit normal (a segment has two, a point none).
 struct CoreFace {
   Vec2 point = Vec2::Zero();   // f, in m

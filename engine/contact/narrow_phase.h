@@ -44,6 +44,11 @@ struct TieRule {
   bool midpoint_first = true;
 };
 
+// A candidate point inside the reference shape by up to this much less than nothing still counts
+// as inside: the rounding of Rᵀ(p − x) for shapes placed exactly touching, far below any
+// physical margin. Every narrow phase's test of containment uses it.
+constexpr double containment_tolerance = 1e-9;  // in m
+
 // The points a pair's cache already holds (world frame), for breaking ties between equally deep
 // vertices: the narrow phase returns the one farthest from them.
 struct CachedPoints {

@@ -17,7 +17,7 @@ using tutorial::draw_world_axes;
 using tutorial::fixed;
 using tutorial::json_of;
 
-constexpr double dt = 1.0 / 30.0;           // time between frames, in s
+constexpr double frame_dt = 1.0 / 30.0;     // time between frames, in s
 const Vec3 axis = Vec3::UnitY();            // the rotation axis ω/|ω|
 constexpr double spin = M_PI / 2;           // |ω|, in rad/s: one turn in 4 s
 const Vec3 omega = spin * axis;             // ω
@@ -75,14 +75,14 @@ std::vector<std::vector<Vec3>> box_edges(const Mat3& rotation) {
 class TurningParticle : public tutorial::Scene {
  public:
   tutorial::SceneInfo info() const override {
-    return {"turning_particle", dt, 61, 2, {Vec2(-2.6, -1.3), Vec2(4.9, 2.2)}};
+    return {"turning_particle", frame_dt, 61, 2, {Vec2(-2.6, -1.3), Vec2(4.9, 2.2)}};
   }
 
   void step() override { ++step_; }
 
   void draw(render::Frame& frame) const override {
     using namespace render::palette;
-    const State s = state_at(step_ * dt);
+    const State s = state_at(step_ * frame_dt);
     frame.caption =
         tr("Ch 1 · Fig 1-2, 1-3: ṙᵢ = ω × rᵢ, |ṙᵢ| = |sin α| |rᵢ| |ω| (eq. 1-27, 1-28)");
     for (const std::vector<Vec3>& edge : box_edges(s.rotation)) {
@@ -115,7 +115,7 @@ class TurningParticle : public tutorial::Scene {
   }
 
   tutorial::Explanation explain() const override {
-    const State s = state_at(step_ * dt);
+    const State s = state_at(step_ * frame_dt);
     return {{tr("A particle of the turning body"),
              {{"ω", "1-27", tr("angular velocity, Skew(ω) = Ṙ Rᵀ"), json_of(omega), "rad/s"},
               {"R", "1-4", tr("rotation by |ω| t about ω/|ω|"), json_of(s.rotation), ""},

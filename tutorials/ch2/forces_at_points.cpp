@@ -16,11 +16,11 @@ namespace {
 using tutorial::fixed;
 using tutorial::json_of;
 
-constexpr double dt = 1.0 / 30.0;     // Δt, in s
-const Vec2 half_extents(1.0, 0.6);    // the body, a box, in m
-constexpr double density = 1.0;       // kg/m²: m = 2.4 kg
-constexpr double force_scale = 0.5;   // m of arrow per N
-constexpr double torque_scale = 1.0;  // m of arrow per N·m (along z, drawn obliquely)
+constexpr double frame_dt = 1.0 / 30.0;  // Δt, in s
+const Vec2 half_extents(1.0, 0.6);       // the body, a box, in m
+constexpr double plate_density = 1.0;    // kg/m²: m = 2.4 kg
+constexpr double force_scale = 0.5;      // m of arrow per N
+constexpr double torque_scale = 1.0;     // m of arrow per N·m (along z, drawn obliquely)
 
 // A force fixed in direction, applied at a point fixed in the body.
 struct AppliedForce {
@@ -47,12 +47,12 @@ Vec3 torque_of(const RigidBody& body, const AppliedForce& f) {
 
 class ForcesAtPoints : public tutorial::Scene {
  public:
-  ForcesAtPoints() : body_(box_body(density, half_extents.x(), half_extents.y(), Vec3::Zero())) {
+  ForcesAtPoints() : body_(box_body(plate_density, half_extents.x(), half_extents.y(), Vec3::Zero())) {
     step();  // step 0: a frame shows the body at t with the forces its step applies
   }
 
   tutorial::SceneInfo info() const override {
-    return {"forces_at_points", dt, 46, 1, {Vec2(-5.95, -1.4), Vec2(2.3, 2.9)}};
+    return {"forces_at_points", frame_dt, 46, 1, {Vec2(-5.95, -1.4), Vec2(2.3, 2.9)}};
   }
 
   // Takes the next step: the forces at their points add up in the body's accumulators
@@ -61,7 +61,7 @@ class ForcesAtPoints : public tutorial::Scene {
     at_t_ = body_;
     for (const AppliedForce& f : applied) at_t_.apply_force_at(f.force, point_of(at_t_, f));
     body_ = at_t_;
-    integrate(body_, dt);
+    integrate(body_, frame_dt);
     body_.clear_forces();
     trail_.push_back(at_t_.x.head<2>());
   }

@@ -17,10 +17,10 @@ namespace {
 
 using tutorial::fixed;
 
-const double dt = StepSettings().dt;  // Δt, in s (the World's default)
+const double world_dt = StepSettings().dt;  // Δt, in s (the World's default)
 
 // "(x, y)": the scene is planar, the z components are 0.
-std::string planar(const Vec3& v) { return "(" + fixed(v.x(), 3) + ", " + fixed(v.y(), 3) + ")"; }
+std::string xy_of(const Vec3& v) { return "(" + fixed(v.x(), 3) + ", " + fixed(v.y(), 3) + ")"; }
 
 class ContactGeometry : public tutorial::Scene {
  public:
@@ -38,7 +38,7 @@ class ContactGeometry : public tutorial::Scene {
   }
 
   tutorial::SceneInfo info() const override {
-    return {"contact_geometry", dt, 30, 1, {Vec2(-2.6, -0.3), Vec2(3.0, 2.7)}};
+    return {"contact_geometry", world_dt, 30, 1, {Vec2(-2.6, -0.3), Vec2(3.0, 2.7)}};
   }
   void step() override { world_.step(); }
 
@@ -139,9 +139,9 @@ class ContactGeometry : public tutorial::Scene {
     p.corner = render::Corner::top_left;
     p.title = fill(c.cached ? tr("a point kept by the cache at t = {0} s") : tr("the deepest point at t = {0} s"),
                    {fixed(world_.report().time, 3)});
-    p.lines = {"x1 = " + planar(geo.x1) + "   x2 = " + planar(geo.x2) + " m",
-               "r1 = " + planar(geo.r1) + "   r2 = " + planar(geo.r2) + " m",
-               fill(tr("n1 = {0}, body 1's outward normal"), {planar(geo.n1)}),
+    p.lines = {"x1 = " + xy_of(geo.x1) + "   x2 = " + xy_of(geo.x2) + " m",
+               "r1 = " + xy_of(geo.r1) + "   r2 = " + xy_of(geo.r2) + " m",
+               fill(tr("n1 = {0}, body 1's outward normal"), {xy_of(geo.n1)}),
                fill(tr("(x2 + r2 − x1 − r1)·n1 = {0} mm (eq. 4-1)"), {fixed(1000.0 * separation, 2)}),
                fill(c.separation < 0.0 ? tr("the engine's C = {0} mm: < 0, the corner is in")
                                        : tr("the engine's C = {0} mm: ≥ 0, apart"),

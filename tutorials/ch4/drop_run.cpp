@@ -19,7 +19,7 @@ constexpr double force_scale = 0.1;     // the landing frames' arrow length per 
 constexpr double longest_force = 16.0;  // forces above this (landing impacts) are drawn cut, in N
 constexpr double squeeze = 0.1;         // N: friction at rest larger than this is a squeeze
 constexpr double hover = 1e-4;          // m: a cached point this far above the ground hovers
-const double g = -StepSettings().gravity.y();  // |g|, in m/s²
+const double g_magnitude = -StepSettings().gravity.y();  // |g|, in m/s²
 
 // The bodies' names, in the language of the run (tr() at run time, not in an initialiser).
 std::vector<std::string> drop_names() { return {tr("ground"), tr("box")}; }
@@ -140,7 +140,7 @@ render::Panel DropRun::panel(render::Corner corner, render::Colour colour) const
     friction += c.lambda_tangent;
   }
   if (contacts.empty()) p.lines.push_back(tr("no contact: falling under m g"));
-  p.lines.push_back("Σ λ_n = " + fixed(total, 2) + " N (m g = " + fixed(g, 2) + " N), Σ λ_t = " +
+  p.lines.push_back("Σ λ_n = " + fixed(total, 2) + " N (m g = " + fixed(g_magnitude, 2) + " N), Σ λ_t = " +
                     fixed(friction, 2) + " N");
   // The text's method leaves two things Lamina's does not (contact/solvers.h): a kept point
   // above the ground that still pushes, and at rest friction squeezing the box.

@@ -9,7 +9,7 @@
 namespace lamina::ch4 {
 namespace {
 
-const double dt = StepSettings().dt;  // Δt, in s: the pair is what one step's narrow phase sees
+const double pair_dt = StepSettings().dt;  // Δt, in s: the pair is what one step's narrow phase sees
 const render::Rect view{Vec2(-4.6, -2.35), Vec2(5.3, 2.75)};  // both scenes' world region, in m
 
 }  // namespace
@@ -17,7 +17,7 @@ const render::Rect view{Vec2(-4.6, -2.35), Vec2(5.3, 2.75)};  // both scenes' wo
 PairScene::PairScene(std::string name, std::string algorithm, PairFigure figure)
     : figure_(std::move(figure)), name_(std::move(name)), algorithm_(std::move(algorithm)) {}
 
-tutorial::SceneInfo PairScene::info() const { return {name_, dt, last() + 1, 1, view}; }
+tutorial::SceneInfo PairScene::info() const { return {name_, pair_dt, last() + 1, 1, view}; }
 
 void PairScene::draw(render::Frame& frame) const {
   figure_.draw_difference(frame);
