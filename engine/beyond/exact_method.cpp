@@ -10,9 +10,11 @@ class ExactMethod final : public StepMethod {
  public:
   void take_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
                  std::vector<double>& lambda, WorldReport* report) override {
-    for (const Island& island : find_islands(problem.velocity, problem.first_joint_row)) {
-      solve_island(problem.velocity, island, problem.settings.step.iterations, scratch_, pgs_,
-                   lambda, problem.settings.step.pitfalls);
+    islands_.find(problem.velocity, problem.first_joint_row);
+    if (work_.size() < islands_.size()) work_.resize(islands_.size());
+    for (std::size_t k = 0; k < islands_.size(); ++k) {
+      solve_island(problem.velocity, islands_.begin()[k], problem.settings.step.iterations,
+                   work_[k], pgs_, lambda, problem.settings.step.pitfalls);
     }
     if (report != nullptr) {
       report->velocity.solution.residuals = {problem.velocity.residual(lambda.data())};
@@ -21,9 +23,10 @@ class ExactMethod final : public StepMethod {
   }
 
  private:
-  Mlcp scratch_;        // an island's MLCP
-  PgsSolver pgs_;       // the sweeps of an island past the limit, and of the push-out
-  SplitImpulse split_;  // the position MLCP and the push-out
+  IslandList islands_;                 // the step's islands
+  std::vector<IslandWorkspace> work_;  // each island's solve, by its number
+  PgsSolver pgs_;                      // the sweeps of an island past the limit, and of the push-out
+  SplitImpulse split_;                 // the position MLCP and the push-out
 };
 
 }  // namespace

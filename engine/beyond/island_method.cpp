@@ -23,13 +23,15 @@ class IslandMethod final : public StepMethod {
   void take_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
                  std::vector<double>& lambda, WorldReport* report) override {
     skip_.assign(bodies.size(), 0);
-    const std::vector<Island> islands = find_islands(problem.velocity, problem.first_joint_row);
-    for (const Island& island : islands) {
+    islands_.find(problem.velocity, problem.first_joint_row);
+    if (work_.size() < islands_.size()) work_.resize(islands_.size());
+    for (std::size_t k = 0; k < islands_.size(); ++k) {
+      const Island& island = islands_.begin()[k];
       if (island.joint_rows > 0 && island.lcp_size <= exact_island_limit) {
-        substep(problem, island, bodies, lambda);
+        substep(problem, island, work_[k], bodies, lambda);
         for (const int b : island.bodies) skip_[static_cast<std::size_t>(b)] = 1;
       } else {
-        solve_island(problem.velocity, island, problem.settings.step.iterations, scratch_, pgs_,
+        solve_island(problem.velocity, island, problem.settings.step.iterations, work_[k], pgs_,
                      lambda, problem.settings.step.pitfalls);
       }
     }
@@ -48,48 +50,47 @@ class IslandMethod final : public StepMethod {
   // Advances the island's bodies by Δt in joint_substeps substeps, each solving the island's rows
   // exactly (contact rows as step 4 wrote them, joints' rows written again at the substep's
   // poses with Δt / joint_substeps) and taking chapter 2's step. λ becomes the substeps' mean.
-  void substep(const StepProblem& problem, const Island& island, std::vector<RigidBody>& bodies,
-               std::vector<double>& lambda) {
+  void substep(const StepProblem& problem, const Island& island, IslandWorkspace& work,
+               std::vector<RigidBody>& bodies, std::vector<double>& lambda) {
     const double h = problem.settings.step.dt / joint_substeps;
     const double beta = problem.settings.step.beta;
     // The island's rows, numbered from 0; a friction row's contact row renumbered with them.
     rows_.clear();
-    std::vector<int> local_of(problem.rows.size(), -1);
+    local_of_.assign(problem.rows.size(), -1);
     for (const int r : island.rows) {
-      local_of[static_cast<std::size_t>(r)] = static_cast<int>(rows_.size());
+      local_of_[static_cast<std::size_t>(r)] = static_cast<int>(rows_.size());
       rows_.push_back(problem.rows[static_cast<std::size_t>(r)]);
     }
     for (ConstraintRow& row : rows_) {
-      if (row.friction_of >= 0) row.friction_of = local_of[static_cast<std::size_t>(row.friction_of)];
+      if (row.friction_of >= 0) row.friction_of = local_of_[static_cast<std::size_t>(row.friction_of)];
     }
     // Each joint of the island and where its rows sit among the island's.
-    std::vector<std::pair<const Constraint*, int>> joints;
+    joints_.clear();
     for (std::size_t j = 0; j < problem.joints.size(); ++j) {
       const RowRange range = problem.joint_rows[j];
-      if (range.count > 0 && local_of[static_cast<std::size_t>(range.first)] >= 0) {
-        joints.emplace_back(problem.joints[j], local_of[static_cast<std::size_t>(range.first)]);
+      if (range.count > 0 && local_of_[static_cast<std::size_t>(range.first)] >= 0) {
+        joints_.emplace_back(problem.joints[j], local_of_[static_cast<std::size_t>(range.first)]);
       }
     }
-    std::vector<Vec6> external(island.bodies.size());  // F_ext, kept for every substep
-    for (std::size_t k = 0; k < external.size(); ++k) {
-      external[k] = external_force_of(bodies[static_cast<std::size_t>(island.bodies[k])]);
-    }
-    std::vector<double> local(island.rows.size()), mean(island.rows.size(), 0.0);
-    for (std::size_t i = 0; i < local.size(); ++i) local[i] = lambda[static_cast<std::size_t>(island.rows[i])];
-    Island all;  // the substep's MLCP is the island's rows, all of them
-    all.lcp_size = island.lcp_size;
-    for (int i = 0; i < static_cast<int>(local.size()); ++i) all.rows.push_back(i);
+    external_.clear();  // F_ext, kept for every substep
+    for (const int b : island.bodies) external_.push_back(external_force_of(bodies[static_cast<std::size_t>(b)]));
+    local_.clear();
+    for (const int r : island.rows) local_.push_back(lambda[static_cast<std::size_t>(r)]);
+    mean_.assign(island.rows.size(), 0.0);
+    all_.lcp_size = island.lcp_size;  // the substep's MLCP is the island's rows, all of them
+    all_.rows.clear();
+    for (int i = 0; i < static_cast<int>(local_.size()); ++i) all_.rows.push_back(i);
     bool pivoting = true;
     for (int s = 0; s < joint_substeps; ++s) {
-      for (const auto& [joint, first] : joints) {
+      for (const auto& [joint, first] : joints_) {
         written_.clear();
         joint->write_rows(bodies, h, beta, written_);
         for (std::size_t k = 0; k < written_.size(); ++k) rows_[static_cast<std::size_t>(first) + k] = written_[k];
       }
-      for (std::size_t k = 0; k < external.size(); ++k) {
+      for (std::size_t k = 0; k < external_.size(); ++k) {
         RigidBody& body = bodies[static_cast<std::size_t>(island.bodies[k])];
-        body.force = external[k].head<3>();
-        body.torque = external[k].tail<3>();
+        body.force = external_[k].head<3>();
+        body.torque = external_[k].tail<3>();
       }
       // eq. 3-16 for the substep, solved exactly (PGS if Lemke gives up). Once Lemke has given
       // up in a step, the step's later substeps go to PGS without asking it again: their MLCPs
@@ -97,27 +98,34 @@ class IslandMethod final : public StepMethod {
       // a nearly straight bridge, whose dependent pins Lemke cannot resolve: 8× the time).
       unconstrained_velocities(bodies, h, unconstrained_);
       substep_mlcp_.assemble(bodies, rows_, unconstrained_, h);
-      const IslandSolve how = solve_island(substep_mlcp_, all, problem.settings.step.iterations, scratch_,
-                                           pgs_, local, problem.settings.step.pitfalls, pivoting);
+      const IslandSolve how = solve_island(substep_mlcp_, all_, problem.settings.step.iterations, work,
+                                           pgs_, local_, problem.settings.step.pitfalls, pivoting);
       pivoting = how == IslandSolve::exact;
       // eq. 3-11: F_c = Jᵀ λ, then chapter 2's step over h
-      substep_mlcp_.add_constraint_forces(bodies, local.data());
+      substep_mlcp_.add_constraint_forces(bodies, local_.data());
       for (const int b : island.bodies) {
         RigidBody& body = bodies[static_cast<std::size_t>(b)];
         integrate(body, h, Integration::semi_implicit, problem.settings.step.pitfalls);
         body.clear_forces();
       }
-      for (std::size_t i = 0; i < local.size(); ++i) mean[i] += local[i] / joint_substeps;
+      for (std::size_t i = 0; i < local_.size(); ++i) mean_[i] += local_[i] / joint_substeps;
     }
-    for (std::size_t i = 0; i < mean.size(); ++i) lambda[static_cast<std::size_t>(island.rows[i])] = mean[i];
+    for (std::size_t i = 0; i < mean_.size(); ++i) lambda[static_cast<std::size_t>(island.rows[i])] = mean_[i];
   }
 
-  Mlcp scratch_;                         // an island's MLCP
+  IslandList islands_;                   // the step's islands
+  std::vector<IslandWorkspace> work_;    // each island's solve, by its number
   Mlcp substep_mlcp_;                    // a substep's MLCP of the island's rows
   PgsSolver pgs_;                        // sweeps of large islands and of the push-out
   SplitImpulse split_;                   // the position MLCP and the push-out
   std::vector<unsigned char> skip_;      // bodies a substepped island has advanced already
-  std::vector<ConstraintRow> rows_;      // a substepped island's rows
+  // a substepped island's:
+  std::vector<ConstraintRow> rows_;      // rows
+  std::vector<int> local_of_;            // number among them of each of the step's rows (−1: not its)
+  std::vector<std::pair<const Constraint*, int>> joints_;  // joints and their first rows
+  std::vector<Vec6> external_;           // F_ext of its bodies
+  std::vector<double> local_, mean_;     // λ of a substep, and the substeps' mean
+  Island all_;                           // every one of its rows
   std::vector<ConstraintRow> written_;   // a joint's rows written again
   std::vector<Vec6> unconstrained_;      // V/h + M⁻¹ F_ext per body, for a substep
 };

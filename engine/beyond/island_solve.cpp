@@ -2,21 +2,19 @@
 
 #include <cmath>
 
-#include "constraints/exact_mlcp.h"
-
 namespace lamina {
 
-IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlcp& scratch,
+IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, IslandWorkspace& work,
                          PgsSolver& pgs, std::vector<double>& lambda, Pitfalls pitfalls,
                          bool try_exact) {
   // An island of every row is the MLCP itself: solved in place, nothing copied (a pyramid)
   const bool whole = static_cast<int>(island.rows.size()) == mlcp.row_count();
-  if (!whole) scratch.assemble_subset(mlcp, island.rows);
-  const Mlcp& own = whole ? mlcp : scratch;
-  std::vector<double> local;
+  if (!whole) work.mlcp.assemble_subset(mlcp, island.rows);
+  const Mlcp& own = whole ? mlcp : work.mlcp;
+  std::vector<double>& local = work.lambda;
+  local.clear();
   if (!whole) {
-    local.resize(island.rows.size());
-    for (std::size_t i = 0; i < local.size(); ++i) local[i] = lambda[static_cast<std::size_t>(island.rows[i])];
+    for (const int r : island.rows) local.push_back(lambda[static_cast<std::size_t>(r)]);
   }
   double* own_lambda = whole ? lambda.data() : local.data();
   IslandSolve how = IslandSolve::pgs;
@@ -27,9 +25,8 @@ IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlc
     finite = std::isfinite(own.eta(i)) && std::isfinite(own.d(i));
   }
   if (try_exact && finite && island.lcp_size <= exact_island_limit && has_exact_form(own)) {
-    const ExactSolution exact = solve_mlcp_exactly(own);
-    if (exact.status == LemkeStatus::solved) {
-      for (int i = 0; i < own.row_count(); ++i) own_lambda[i] = exact.lambda[i];
+    if (work.exact.solve(own) == LemkeStatus::solved) {
+      for (int i = 0; i < own.row_count(); ++i) own_lambda[i] = work.exact.lambda()[i];
       how = IslandSolve::exact;
     }
   }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "beyond/islands.h"
+#include "constraints/exact_mlcp.h"
 #include "constraints/mlcp.h"
 #include "constraints/pgs_solver.h"
 #include "contact/split_impulse.h"
@@ -21,12 +22,21 @@ constexpr int exact_island_limit = 240;
 // How an island's λ was found.
 enum class IslandSolve { exact, pgs };
 
+// The memory an island's solve works in: kept by a method from step to step, one for each
+// island number, so that a steady step (its islands the same sizes as the step before) solves
+// them without allocating.
+struct IslandWorkspace {
+  Mlcp mlcp;                   // the island's own MLCP, when it is not every row
+  std::vector<double> lambda;  // its λ
+  ExactMlcpSolver exact;       // its exact solve
+};
+
 // Solves the island's rows of `mlcp` (its MLCP, eq. 3-24, on its own: islands.h) into their λ:
 // exactly (exact_mlcp.h) when the island has at most exact_island_limit variables and the solve
 // ends in a solution, else by `sweeps` PGS sweeps from the λ there (with the PGS pitfalls).
 // Rows the exact form cannot take (a friction row with fixed bounds: crude-friction) go to PGS
-// too, and so does every island when `try_exact` is false. `scratch` and `pgs` are working memory.
-IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Mlcp& scratch,
+// too, and so does every island when `try_exact` is false. `work` and `pgs` are working memory.
+IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, IslandWorkspace& work,
                          PgsSolver& pgs, std::vector<double>& lambda, Pitfalls pitfalls = {},
                          bool try_exact = true);
 

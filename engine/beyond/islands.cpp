@@ -29,39 +29,49 @@ int lcp_variables(const Mlcp& mlcp, int i) {
 }  // namespace
 
 std::vector<Island> find_islands(const Mlcp& mlcp, std::size_t first_joint_row) {
-  std::vector<int> parent(static_cast<std::size_t>(mlcp.body_count()));
-  std::iota(parent.begin(), parent.end(), 0);
+  IslandList list;
+  list.find(mlcp, first_joint_row);
+  return std::vector<Island>(list.begin(), list.end());
+}
+
+void IslandList::find(const Mlcp& mlcp, std::size_t first_joint_row) {
+  parent_.resize(static_cast<std::size_t>(mlcp.body_count()));
+  std::iota(parent_.begin(), parent_.end(), 0);
   const int rows = mlcp.row_count();
   for (int i = 0; i < rows; ++i) {
     const std::array<int, 2> b = mlcp.bodies_of(i);
     if (b[1] < 0) continue;
-    const int r0 = root_of(parent, b[0]);
-    const int r1 = root_of(parent, b[1]);
+    const int r0 = root_of(parent_, b[0]);
+    const int r1 = root_of(parent_, b[1]);
     // the smaller root stays: the same rows join the same way whatever the order of unions
-    if (r0 != r1) parent[static_cast<std::size_t>(std::max(r0, r1))] = std::min(r0, r1);
+    if (r0 != r1) parent_[static_cast<std::size_t>(std::max(r0, r1))] = std::min(r0, r1);
   }
-  std::vector<Island> islands;
-  std::vector<int> island_of_root(parent.size(), -1);
-  std::vector<unsigned char> seen(parent.size(), 0);
+  count_ = 0;
+  island_of_root_.assign(parent_.size(), -1);
+  seen_.assign(parent_.size(), 0);
   for (int i = 0; i < rows; ++i) {
     const std::array<int, 2> b = mlcp.bodies_of(i);
-    const std::size_t root = static_cast<std::size_t>(root_of(parent, b[0]));
-    if (island_of_root[root] < 0) {
-      island_of_root[root] = static_cast<int>(islands.size());
-      islands.emplace_back();
+    const std::size_t root = static_cast<std::size_t>(root_of(parent_, b[0]));
+    if (island_of_root_[root] < 0) {
+      island_of_root_[root] = static_cast<int>(count_);
+      if (count_ == islands_.size()) islands_.emplace_back();
+      Island& fresh = islands_[count_++];
+      fresh.rows.clear();  // memory of an earlier step's island kept
+      fresh.bodies.clear();
+      fresh.joint_rows = 0;
+      fresh.lcp_size = 0;
     }
-    Island& island = islands[static_cast<std::size_t>(island_of_root[root])];
+    Island& island = islands_[static_cast<std::size_t>(island_of_root_[root])];
     island.rows.push_back(i);
     if (static_cast<std::size_t>(i) >= first_joint_row) ++island.joint_rows;
     island.lcp_size += lcp_variables(mlcp, i);
     for (const int body : b) {
-      if (body < 0 || seen[static_cast<std::size_t>(body)]) continue;
-      seen[static_cast<std::size_t>(body)] = 1;
+      if (body < 0 || seen_[static_cast<std::size_t>(body)]) continue;
+      seen_[static_cast<std::size_t>(body)] = 1;
       island.bodies.push_back(body);
     }
   }
-  for (Island& island : islands) std::sort(island.bodies.begin(), island.bodies.end());
-  return islands;
+  for (std::size_t k = 0; k < count_; ++k) std::sort(islands_[k].bodies.begin(), islands_[k].bodies.end());
 }
 
 }  // namespace lamina

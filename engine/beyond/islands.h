@@ -29,4 +29,22 @@ struct Island {
 // joints' rows.
 std::vector<Island> find_islands(const Mlcp& mlcp, std::size_t first_joint_row);
 
+// The same islands found in memory kept from step to step: a steady step finds its islands
+// without allocating (a method's member, found again every step).
+class IslandList {
+ public:
+  // Finds the islands of the MLCP's rows, as find_islands, in place of the last ones.
+  void find(const Mlcp& mlcp, std::size_t first_joint_row);
+  const Island* begin() const { return islands_.data(); }
+  const Island* end() const { return islands_.data() + count_; }
+  std::size_t size() const { return count_; }
+
+ private:
+  std::vector<Island> islands_;  // the first count_ are the islands found; the rest keep their memory
+  std::size_t count_ = 0;
+  std::vector<int> parent_;      // union-find's parent of each body
+  std::vector<int> island_of_root_;
+  std::vector<unsigned char> seen_;
+};
+
 }  // namespace lamina

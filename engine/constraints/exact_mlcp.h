@@ -16,7 +16,11 @@
 // when there is none.
 #pragma once
 
+#include <vector>
+
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/QR>
 
 #include "constraints/lemke.h"
 #include "constraints/mlcp.h"
@@ -34,5 +38,36 @@ bool has_exact_form(const Mlcp& mlcp);
 
 // Throws std::invalid_argument for a row whose fixed bounds are not [0, ∞) or (−∞, ∞).
 ExactSolution solve_mlcp_exactly(const Mlcp& mlcp);
+
+// The same solve with its memory kept from solve to solve: an MLCP of the rows and kinds solved
+// last is solved again without allocating (an island of a World's step, every step), but for
+// a singular J B of equality rows, whose least-|λ| solve allocates.
+class ExactMlcpSolver {
+ public:
+  // As solve_mlcp_exactly; λ of every row is lambda() when solved (zeros otherwise).
+  LemkeStatus solve(const Mlcp& mlcp);
+  const Eigen::VectorXd& lambda() const { return lambda_; }
+  int pivots() const { return pivots_; }  // Lemke's pivots (0 for equality rows only)
+
+ private:
+  // Row i's LCP variables: p (its λ, or λ's positive part), then m and s where it has them
+  // (−1 where it has not).
+  struct Variables {
+    int p, m, s;
+  };
+  void delassus(const Mlcp& mlcp);
+  LemkeStatus solve_equalities(const Mlcp& mlcp);
+
+  Eigen::MatrixXd JB_;           // J B of the rows
+  Eigen::VectorXd eta_;          // η of the rows
+  Eigen::VectorXd lambda_;       // the answer
+  Eigen::VectorXd residual_;     // J B λ − η, for checking an equality solve
+  Eigen::LDLT<Eigen::MatrixXd> ldlt_;
+  std::vector<Variables> vars_;  // each row's LCP variables
+  Eigen::MatrixXd M_;            // the LCP (M, q)
+  Eigen::VectorXd q_;
+  LemkeSolver lemke_;
+  int pivots_ = 0;
+};
 
 }  // namespace lamina

@@ -16,6 +16,8 @@
 // Stone, "The Linear Complementarity Problem", 1992, §4.4).
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Core>
 
 namespace lamina {
@@ -39,5 +41,37 @@ struct LemkeResult {
 // Solves the LCP (M, q), M square, q of its size. max_pivots ≤ 0 means 50 · (n + 1).
 // Throws std::invalid_argument for mismatched sizes or a non-finite entry.
 LemkeResult solve_lcp_lemke(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, int max_pivots = 0);
+
+// The same method with its memory kept from solve to solve: an LCP of the size solved last is
+// solved again without allocating (a World's step solves its islands every step).
+class LemkeSolver {
+ public:
+  // As solve_lcp_lemke; the solution is z() when solved.
+  LemkeStatus solve(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, int max_pivots = 0);
+  const Eigen::VectorXd& z() const { return z_; }  // the solution when solved, zeros otherwise
+  int pivots() const { return pivots_; }           // pivots taken by the last solve
+
+ private:
+  // The tableau B⁻¹ [I  −M  −d | q] of the n rows: columns 0..n−1 are the w's, n..2n−1 the z's,
+  // 2n is z0, and the last column is the basic variables' values.
+  void start(const Eigen::MatrixXd& M, const Eigen::VectorXd& q);
+  void pivot(int row, int variable);
+  int leaving_row(int variable) const;
+  bool lexicographically_less(int a, int b, int variable) const;
+  void read_z();
+  bool solves(const Eigen::MatrixXd& M, const Eigen::VectorXd& q);
+  int z0() const { return 2 * n_; }
+  double value(int row) const { return t_(row, 2 * n_ + 1); }
+  int complement(int variable) const { return variable < n_ ? variable + n_ : variable - n_; }
+
+  int n_ = 0;
+  Eigen::MatrixXd t_;                 // the tableau
+  Eigen::VectorXd factors_;           // a pivot's multiples of the pivot row, one per row
+  std::vector<int> basis_;            // basis_[row]: the variable basic in that row
+  std::vector<unsigned char> basic_;  // basic_[variable]: 1 when it is basic
+  Eigen::VectorXd z_;                 // the solution
+  Eigen::VectorXd w_, terms_;         // M z + q and Σ_j |M_ij z_j|, for checking z
+  int pivots_ = 0;
+};
 
 }  // namespace lamina
