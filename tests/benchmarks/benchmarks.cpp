@@ -12,12 +12,17 @@
 
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <iostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "benchmarks/report.h"
+#include "contact/world.h"
+#ifdef LAMINA_HAVE_BOX2D_V3
+#include "benchmarks/box2d_v3_runs.h"
+#endif
 
 using namespace lamina;
 
@@ -49,49 +54,67 @@ void box2d_run(benchmark::State& state, PyramidShape shape) {
   for (auto _ : state) record(state, {"Box2D", base, 8, shape}, run_box2d_pyramid(shape, base));
 }
 
+// Lamina's default method, `islands`, at its default sweeps: range(0) bodies in the base.
+void lamina_islands_pyramid(benchmark::State& state) {
+  const int base = static_cast<int>(state.range(0));
+  const int iterations = WorldSettings().step.iterations;
+  for (auto _ : state) {
+    record(state, {"Lamina islands", base, iterations},
+           run_lamina_pyramid(PyramidShape::boxes, base, iterations, "islands"));
+  }
+}
+
 void lamina_pyramid(benchmark::State& state) { lamina_run(state, PyramidShape::boxes); }
 void box2d_pyramid(benchmark::State& state) { box2d_run(state, PyramidShape::boxes); }
 void lamina_hexagon_pyramid(benchmark::State& state) { lamina_run(state, PyramidShape::hexagons); }
 void box2d_hexagon_pyramid(benchmark::State& state) { box2d_run(state, PyramidShape::hexagons); }
 
-// Base 20 and 40 at the recommended 10 sweeps and at Box2D's 8; the scaling bases at 8.
-BENCHMARK(lamina_pyramid)
-    ->ArgNames({"base", "iterations"})
-    ->ArgsProduct({{20, 40}, {10, 8}})
-    ->Args({10, 8})
-    ->Args({80, 8})
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Repetitions(7)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(box2d_pyramid)
-    ->ArgName("base")
-    ->Arg(10)
-    ->Arg(20)
-    ->Arg(40)
-    ->Arg(80)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Repetitions(7)
-    ->Unit(benchmark::kMillisecond);
+// Every benchmark: one pyramid run per repetition, 7 repetitions, its "Time" the run's CPU ms per
+// step (manual time).
+benchmark::internal::Benchmark* per_step(benchmark::internal::Benchmark* b) {
+  return b->UseManualTime()->Iterations(1)->Repetitions(7)->Unit(benchmark::kMillisecond);
+}
 
+// A benchmark over pyramid bases: range(0) is the base.
+benchmark::internal::Benchmark* over_bases(benchmark::internal::Benchmark* b,
+                                           std::initializer_list<int> bases) {
+  b->ArgName("base");
+  for (const int base : bases) b->Arg(base);
+  return per_step(b);
+}
+
+#ifdef LAMINA_HAVE_BOX2D_V3
+void box2d_v3_pyramid(benchmark::State& state) {
+  const int base = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    record(state, {"Box2D v3", base, box2d_v3_substeps}, run_box2d_v3_pyramid(base));
+  }
+}
+#endif
+
+// Base 20 and 40 at the recommended 10 sweeps and at Box2D's 8; the scaling bases at 8.
+const auto* const lamina_boxes = per_step(
+    benchmark::RegisterBenchmark("lamina_pyramid", lamina_pyramid)
+        ->ArgNames({"base", "iterations"})
+        ->ArgsProduct({{20, 40}, {10, 8}})
+        ->Args({10, 8})
+        ->Args({80, 8}));
+const auto* const box2d_boxes =
+    over_bases(benchmark::RegisterBenchmark("box2d_pyramid", box2d_pyramid), {10, 20, 40, 80});
+// Issue 19's peers: Lamina's default method, and Box2D v3 when it is built in.
+const auto* const islands_boxes = over_bases(
+    benchmark::RegisterBenchmark("lamina_islands_pyramid", lamina_islands_pyramid), {20, 40, 80});
+#ifdef LAMINA_HAVE_BOX2D_V3
+const auto* const v3_boxes =
+    over_bases(benchmark::RegisterBenchmark("box2d_v3_pyramid", box2d_v3_pyramid), {20, 40, 80});
+#endif
 // Hexagon pyramids at Box2D's sweeps, both engines, bases 10, 20 and 40.
-BENCHMARK(lamina_hexagon_pyramid)
-    ->ArgNames({"base", "iterations"})
-    ->ArgsProduct({{10, 20, 40}, {8}})
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Repetitions(7)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(box2d_hexagon_pyramid)
-    ->ArgName("base")
-    ->Arg(10)
-    ->Arg(20)
-    ->Arg(40)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Repetitions(7)
-    ->Unit(benchmark::kMillisecond);
+const auto* const lamina_hexagons = per_step(
+    benchmark::RegisterBenchmark("lamina_hexagon_pyramid", lamina_hexagon_pyramid)
+        ->ArgNames({"base", "iterations"})
+        ->ArgsProduct({{10, 20, 40}, {8}}));
+const auto* const box2d_hexagons = over_bases(
+    benchmark::RegisterBenchmark("box2d_hexagon_pyramid", box2d_hexagon_pyramid), {10, 20, 40});
 
 std::string load_average() {
   std::ifstream in("/proc/loadavg");
@@ -135,7 +158,7 @@ int main(int argc, char** argv) {
     measurements.warm_starts.push_back(measure_warm_start(40, 100, 3, {0.1, 0.01}, 5000));
     measurements.load_after = load_average();
     const Tables tables = make_tables(measurements);
-    for (const char* name : {"machine", "pyramids", "scaling", "warm_start", "hexagons"}) {
+    for (const char* name : {"machine", "pyramids", "peers", "scaling", "warm_start", "hexagons"}) {
       std::cout << "\n" << tables.at(name);
     }
     if (!report.empty()) write_tables(tables, report);

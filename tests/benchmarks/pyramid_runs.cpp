@@ -17,8 +17,6 @@
 namespace lamina {
 namespace {
 
-using Positions = std::vector<std::array<double, 2>>;  // every body's centre (x, y), in m
-
 double cpu_seconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
@@ -26,8 +24,7 @@ double cpu_seconds() {
 }
 
 // Times `timed_steps` calls of step(): mean CPU and wall-clock milliseconds per step.
-template <class Step>
-void time_steps(Step&& step, PyramidRun& run) {
+void time_steps(const std::function<void()>& step, PyramidRun& run) {
   const double cpu_start = cpu_seconds();
   const auto wall_start = std::chrono::steady_clock::now();
   for (int i = 0; i < timed_steps; ++i) step();
@@ -50,19 +47,6 @@ void measure_standing(const Scene& scene, const Positions& start, const Position
   }
 }
 
-// One run: a first step, the timed steps, the rest of 10 s, and the standing check.
-template <class Step, class Where, class Count>
-PyramidRun run_pyramid(const Scene& scene, Step&& step, Where&& where, Count&& count_rows) {
-  PyramidRun run;
-  const Positions start = where();
-  step();
-  time_steps(step, run);
-  count_rows(run);
-  for (int i = 1 + timed_steps; i < standing_steps; ++i) step();
-  measure_standing(scene, start, where(), run);
-  return run;
-}
-
 // The sweeps after which a recorded residual first is ≤ target; max_sweeps if never.
 double sweeps_to(const std::vector<double>& residuals, double target, int max_sweeps) {
   for (size_t k = 0; k < residuals.size(); ++k) {
@@ -72,6 +56,19 @@ double sweeps_to(const std::vector<double>& residuals, double target, int max_sw
 }
 
 }  // namespace
+
+PyramidRun measure_pyramid_run(const Scene& scene, const std::function<void()>& step,
+                               const std::function<Positions()>& where,
+                               const std::function<void(PyramidRun&)>& count_rows) {
+  PyramidRun run;
+  const Positions start = where();
+  step();
+  time_steps(step, run);
+  count_rows(run);
+  for (int i = 1 + timed_steps; i < standing_steps; ++i) step();
+  measure_standing(scene, start, where(), run);
+  return run;
+}
 
 std::string shape_name(PyramidShape shape) {
   return shape == PyramidShape::boxes ? "boxes" : "hexagons";
@@ -88,9 +85,10 @@ double PyramidRun::us_per_row_sweep() const {
   return 1e3 * ms_per_step / row_sweeps;
 }
 
-PyramidRun run_lamina_pyramid(PyramidShape shape, int base, int iterations) {
+PyramidRun run_lamina_pyramid(PyramidShape shape, int base, int iterations,
+                              const std::string& solver) {
   Scene scene = pyramid_of(shape, base);
-  scene.solver = "pgs";  // the text's PGS with Lamina's additions, as the report measures it
+  scene.solver = solver;
   WorldSettings settings = world_settings(scene);
   settings.step.iterations = iterations;
   World world = build_world(scene, settings);
@@ -108,7 +106,7 @@ PyramidRun run_lamina_pyramid(PyramidShape shape, int base, int iterations) {
     run.velocity_iterations = settings.step.iterations;
     run.position_iterations = settings.position_iterations;
   };
-  return run_pyramid(scene, [&] { world.step(); }, where, count_rows);
+  return measure_pyramid_run(scene, [&] { world.step(); }, where, count_rows);
 }
 
 PyramidRun run_box2d_pyramid(PyramidShape shape, int base) {
@@ -130,7 +128,7 @@ PyramidRun run_box2d_pyramid(PyramidShape shape, int base) {
     run.velocity_iterations = box2d.settings.velocity_iterations;
     run.position_iterations = box2d.settings.position_iterations;
   };
-  return run_pyramid(scene, [&] { box2d.step(); }, where, count_rows);
+  return measure_pyramid_run(scene, [&] { box2d.step(); }, where, count_rows);
 }
 
 WarmStartRun measure_warm_start(int base, int first_step, int steps,

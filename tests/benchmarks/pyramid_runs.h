@@ -13,6 +13,8 @@
 //             than 0.1 m sideways (issue 8's bar, for either shape)
 #pragma once
 
+#include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,10 +53,20 @@ struct PyramidRun {
   double us_per_row_sweep() const;
 };
 
-// Lamina (World, the method `pgs`) with the given PGS sweeps per step; position sweeps stay 3.
-PyramidRun run_lamina_pyramid(PyramidShape shape, int base, int iterations);
+// Lamina (World) with the given PGS sweeps per step and the method `solver` (`pgs`, the text's
+// PGS with Lamina's additions, or `islands`, the default); position sweeps stay 3.
+PyramidRun run_lamina_pyramid(PyramidShape shape, int base, int iterations,
+                              const std::string& solver = "pgs");
 // Box2D 2.4.1 at 8 velocity / 3 position iterations.
 PyramidRun run_box2d_pyramid(PyramidShape shape, int base);
+
+// One run of any engine, measured alike: a first step, the timed steps, the rest of 10 s, and
+// the standing check. `where` gives every body's centre (x, y) in the Scene's order; `count_rows`
+// fills in the run's contact points, rows and sweeps after the timed steps.
+using Positions = std::vector<std::array<double, 2>>;
+PyramidRun measure_pyramid_run(const Scene& scene, const std::function<void()>& step,
+                               const std::function<Positions()>& where,
+                               const std::function<void(PyramidRun&)>& count_rows);
 
 // PGS sweeps to reach ‖W‖ ≤ r ‖W(λ = 0)‖ on the velocity MLCP of the resting pyramid for a few
 // residuals r, starting from the contact cache's λ (warm) and from zero (cold), averaged over

@@ -11,6 +11,10 @@
 #include <thread>
 #include <tuple>
 
+#ifdef LAMINA_HAVE_BOX2D_V3
+#include "benchmarks/box2d_v3_runs.h"
+#endif
+
 namespace lamina {
 namespace {
 
@@ -61,6 +65,11 @@ std::optional<Summary> summary(const Measurements& m, const RunKey& key) {
 
 RunKey box2d_key(int base) { return {"Box2D", base, box2d_iterations}; }
 
+// Lamina's default method at its default sweeps, and Box2D v3 at its substeps.
+constexpr int v3_substeps = 4;
+RunKey islands_key(int base) { return {"Lamina islands", base, recommended_iterations}; }
+RunKey v3_key(int base) { return {"Box2D v3", base, v3_substeps}; }
+
 // An engine on the hexagon pyramid, at Box2D's sweeps (8 / 3) for both.
 RunKey hexagon_key(const std::string& engine, int base) {
   return {engine, base, box2d_iterations, PyramidShape::hexagons};
@@ -93,6 +102,12 @@ std::string machine_table(const Measurements& m) {
       << "| cores | " << std::thread::hardware_concurrency() << " (the benchmarks use one) |\n"
       << "| compiler | GCC " << __VERSION__ << ", -O2 -ffp-contract=off (Release) |\n"
       << "| Box2D | " << LAMINA_BOX2D_VERSION << " (Debian's libbox2d) |\n"
+#ifdef LAMINA_HAVE_BOX2D_V3
+      << "| Box2D v3 | " << box2d_v3_version() << " (built from its source by "
+         "-DLAMINA_BOX2D_V3_DIR: -O3, AVX2, one thread, " << box2d_v3_substeps << " substeps) |\n"
+#else
+      << "| Box2D v3 | not built (configure with -DLAMINA_BOX2D_V3_DIR=<its source>) |\n"
+#endif
       << "| load average (1, 5, 15 min; running, total tasks) | before: " << m.load_before
       << "; after: " << m.load_after << " |\n";
   return out.str();
@@ -147,6 +162,37 @@ std::string pyramids_table(const Measurements& m) {
          "10 s: largest sideways move (m) | standing |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const int base : {20, 40}) pyramid_rows(m, base, out, verdicts);
   return out.str() + "\n" + verdicts.str();
+}
+
+// Issue 19's bars, a line per base: Lamina's `pgs` at Box2D's 8 sweeps against Box2D 2.4.1,
+// and Lamina's default method `islands` at its default sweeps against Box2D v3 (when built).
+std::string peers_table(const Measurements& m) {
+  std::ostringstream out;
+  out << "| pyramid | Box2D 2.4.1, 8 / 3 | Lamina `pgs`, 8 / 3 | `pgs` ÷ Box2D 2.4.1 | Lamina "
+         "`islands`, " << recommended_iterations << " / 3 | Box2D v3, " << v3_substeps
+      << " substeps | `islands` ÷ Box2D v3 | `pgs` ÷ Box2D v3 |\n|---|---|---|---|---|---|---|---|\n";
+  const auto ratio = [](const std::optional<Summary>& a, const std::optional<Summary>& b) {
+    return a && b ? fixed(a->ms / b->ms, 2) + "×" : std::string("–");
+  };
+  const auto ms = [](const std::optional<Summary>& s) { return s ? fixed(s->ms, 3) : std::string("–"); };
+  std::ostringstream verdicts;
+  for (const int base : bases(m, PyramidShape::boxes)) {
+    const std::optional<Summary> box2d = summary(m, box2d_key(base));
+    const std::optional<Summary> pgs = summary(m, {"Lamina", base, box2d_iterations});
+    const std::optional<Summary> islands = summary(m, islands_key(base));
+    const std::optional<Summary> v3 = summary(m, v3_key(base));
+    if (!islands && !v3) continue;
+    out << "| " << base << " | " << ms(box2d) << " | " << ms(pgs) << " | " << ratio(pgs, box2d)
+        << " | " << ms(islands) << " | " << ms(v3) << " | " << ratio(islands, v3) << " | "
+        << ratio(pgs, v3) << " |\n";
+    if (pgs && box2d) {
+      verdicts << "- base " << base << ": `pgs` ÷ Box2D 2.4.1 = " << against(pgs->ms / box2d->ms, 0.5);
+      if (islands && v3) verdicts << "; `islands` ÷ Box2D v3 = " << against(islands->ms / v3->ms, 1.5);
+      verdicts << ".\n";
+    }
+  }
+  out << "\nCPU ms per step, medians of the repetitions, one thread each.\n" << verdicts.str();
+  return out.str();
 }
 
 // Least-squares slope of ln(ms) against ln(velocity rows): 1 is linear growth.
@@ -328,6 +374,7 @@ bool RunKey::operator<(const RunKey& o) const {
 Tables make_tables(const Measurements& m) {
   return {{"machine", machine_table(m)},
           {"pyramids", pyramids_table(m)},
+          {"peers", peers_table(m)},
           {"scaling", scaling_table(m)},
           {"warm_start", warm_start_table(m)},
           {"hexagons", hexagons_table(m)},
