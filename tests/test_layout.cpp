@@ -69,3 +69,23 @@ TEST_CASE("the layout check finds a legend over a body, and labels over each oth
   CHECK(render::layout_overlaps({{Kind::body, body}, {Kind::label, {Vec2(150, 150), Vec2(250, 170)}}}).empty());  // a label by its body
   CHECK(render::layout_overlaps({{Kind::panel, {Vec2(0, 0), Vec2(50, 50)}}, {Kind::legend, {Vec2(40, 40), Vec2(90, 90)}}}).size() == 1);
 }
+
+TEST_CASE("on a 320 × 180 frame the caption is cut short rather than run under the status line") {
+  // `lamina run`'s caption and status on the smallest frame a slide might take: the caption,
+  // at its smallest size (8 px), is still wider than the room left of the status, so it ends
+  // in "…" (before, the two lines were drawn over each other)
+  tutorial::RenderRequest request;
+  request.size = {320, 180};
+  request.write_frames = false;
+  tutorial::FrameRenderer renderer(request);
+  render::Frame frame;
+  frame.caption = "box-on-ground · a box dropped flat from y = 2 onto the ground · solver islands";
+  frame.status = "t = 1.667 s · step 100 · Δt = 1/60 s";
+  const render::Rect view{Vec2(-5.0, -1.0), Vec2(5.0, 4.0)};
+  const std::vector<render::LayoutBox> boxes = renderer.layout(frame, view);
+  int labels = 0;
+  for (const render::LayoutBox& box : boxes) labels += box.kind == render::LayoutBox::Kind::label;
+  CHECK(labels == 2);  // the caption and the status are in the layout, as labels
+  const std::vector<std::string> overlaps = render::layout_overlaps(boxes);
+  CHECK(overlaps.empty());
+}

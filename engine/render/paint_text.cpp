@@ -1,5 +1,6 @@
 // Caption, status line and the corner panels of numbers.
 #include <algorithm>
+#include <string>
 
 #include "render/paint.h"
 
@@ -9,9 +10,26 @@ namespace {
 // Height of one line of the face at its size, in pixels.
 double line_height(Canvas& c, Typeface face, int px) { return c.text.metrics(face, px).height; }
 
-// The caption at the top left, shrunk when it would run into the status line at the top right.
-// The status gets at least 30 % of the width, so a growing step count does not change the
-// caption's size from one frame of a sequence to the next.
+// The longest start of `line` (whole UTF-8 characters) that fits `room` pixels with "…" after
+// it, and the "…"; the line itself when it fits.
+std::string fitted(Canvas& c, const std::string& line, const TextStyle& style, double room) {
+  if (c.text.width(line, style.face, style.px) <= room) return line;
+  std::size_t keep = line.size();
+  while (keep > 0) {
+    do {
+      --keep;  // back to the first byte of a character
+    } while (keep > 0 && (static_cast<unsigned char>(line[keep]) & 0xC0) == 0x80);
+    const std::string shorter = line.substr(0, keep) + "…";
+    if (c.text.width(shorter, style.face, style.px) <= room) return shorter;
+  }
+  return "…";
+}
+
+// The caption at the top left, shrunk when it would run into the status line at the top right,
+// down to 8 px, and cut short with "…" when even that is too long (a 320 × 180 frame). The
+// status gets at least 30 % of the width, so a growing step count does not change the caption's
+// size from one frame of a sequence to the next. Both lines are labels of the layout: the layout
+// check finds them over each other.
 void paint_top_bar(const Frame& frame, Canvas& c) {
   const double middle = c.style.margin + 0.65 * c.style.caption_px;
   const double status =
@@ -21,9 +39,13 @@ void paint_top_bar(const Frame& frame, Canvas& c) {
   const int px = natural <= room
                      ? c.style.caption_px
                      : std::max(8, static_cast<int>(c.style.caption_px * room / natural));
-  c.write(frame.caption, {Typeface::bold, px, palette::ink}, Vec2(c.style.margin, middle));
-  c.write(frame.status, {Typeface::sans, c.style.text_px, palette::grey},
-          Vec2(c.size.width - c.style.margin, middle), 1.0);
+  const TextStyle caption{Typeface::bold, px, palette::ink};
+  const Rect caption_box =
+      c.write(fitted(c, frame.caption, caption, room), caption, Vec2(c.style.margin, middle));
+  const Rect status_box = c.write(frame.status, {Typeface::sans, c.style.text_px, palette::grey},
+                                  Vec2(c.size.width - c.style.margin, middle), 1.0);
+  if (!frame.caption.empty()) c.mark(LayoutBox::Kind::label, caption_box);
+  if (!frame.status.empty()) c.mark(LayoutBox::Kind::label, status_box);
   const double rule = c.style.top_bar() - 0.5 * c.style.margin;
   c.draw.stroke_segment(Vec2(c.style.margin, rule), Vec2(c.size.width - c.style.margin, rule),
                  c.style.unit, palette::grid);
