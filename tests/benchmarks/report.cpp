@@ -325,7 +325,12 @@ std::string runs_csv(const Measurements& m, PyramidShape shape) {
 std::string scaling_csv(const Measurements& m) {
   std::ostringstream out;
   out << "base,boxes,lamina_ms_per_step,box2d_ms_per_step,lamina_velocity_rows,"
-         "box2d_velocity_rows,lamina_us_per_row_sweep,box2d_us_per_row_sweep\n";
+         "box2d_velocity_rows,lamina_us_per_row_sweep,box2d_us_per_row_sweep,"
+         "islands_ms_per_step,box2d_v3_ms_per_step\n";
+  // a base an engine was not run at (or Box2D v3 not built): NaN, which the plot skips
+  const auto ms_or_nan = [](const std::optional<Summary>& s) {
+    return s ? fixed(s->ms, 4) : std::string("NaN");
+  };
   for (const int base : bases(m, PyramidShape::boxes)) {
     const std::optional<Summary> l = summary(m, {"Lamina", base, box2d_iterations});
     const std::optional<Summary> b = summary(m, box2d_key(base));
@@ -333,7 +338,8 @@ std::string scaling_csv(const Measurements& m) {
     out << base << ',' << l->run.bodies << ',' << fixed(l->ms, 4) << ',' << fixed(b->ms, 4) << ','
         << l->run.velocity_rows << ',' << b->run.velocity_rows << ','
         << fixed(l->run.us_per_row_sweep(), 5) << ',' << fixed(b->run.us_per_row_sweep(), 5)
-        << '\n';
+        << ',' << ms_or_nan(summary(m, islands_key(base))) << ','
+        << ms_or_nan(summary(m, v3_key(base))) << '\n';
   }
   return out.str();
 }
