@@ -99,7 +99,11 @@ TEST_SUITE("ExtremeSettings") {
           scene.step.dt = dt;
           scene.step.iterations = iterations;
           Watch watch(scene);
-          require_sound(watch, dt < 1e-3 ? 1.0 : 3.0);  // 1 s: 10⁴ steps at Δt = 1e-4
+          // 1 s: 10⁴ steps at Δt = 1e-4; the bridge, checked for finiteness only, 0.5 s there:
+          // its box lands at 0.29 s, and each of its steps is 8 substeps of up to 200 sweeps
+          // (at 1 s, the bridge took most of the case: 250 s of it under ASan, now 167 s)
+          const double seconds = dt >= 1e-3 ? 3.0 : name == "bridge" ? 0.5 : 1.0;
+          require_sound(watch, seconds);
           if (iterations == 0 || name == "bridge") continue;
           if (name == "pendulum") {
             const double swing = watch.body("bob").mass * g * 2.0;  // m g L, L = 2 m
