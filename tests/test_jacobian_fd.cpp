@@ -185,7 +185,8 @@ TEST_SUITE("JacobianFiniteDifference") {
     RowCheck rows_of(1000.0);
     for (int trial = 0; trial < states; ++trial) {
       const std::vector<RigidBody> bodies = random_bodies(rng);
-      const auto [a, b] = random_pair(rng);
+      const std::array<int, 2> pair = random_pair(rng);  // named, not bound: lambdas below use them
+      const int a = pair[0], b = pair[1];
       // ends at least 0.5 m apart
       Anchor end_a, end_b;
       do {
@@ -206,7 +207,8 @@ TEST_SUITE("JacobianFiniteDifference") {
     RowCheck rows_of(1.5);
     for (int trial = 0; trial < states; ++trial) {
       const std::vector<RigidBody> bodies = random_bodies(rng);
-      const auto [a, b] = random_pair(rng);
+      const std::array<int, 2> pair = random_pair(rng);  // named, not bound: lambdas below use them
+      const int a = pair[0], b = pair[1];
       // the pins need not meet: J holds for any C, and a joint with an error is when it matters
       const Anchor pin_a = random_anchor(rng, bodies, a), pin_b = random_anchor(rng, bodies, b);
       const RevoluteJoint pin(pin_a, pin_b);
@@ -226,7 +228,8 @@ TEST_SUITE("JacobianFiniteDifference") {
     RowCheck rows_of(0.0);
     for (int trial = 0; trial < states; ++trial) {
       const std::vector<RigidBody> bodies = random_bodies(rng);
-      const auto [a, b] = random_pair(rng);
+      const std::array<int, 2> pair = random_pair(rng);  // named, not bound: lambdas below use them
+      const int a = pair[0], b = pair[1];
       const double relative = angle_of(bodies, b) - angle_of(bodies, a);
       // θ_b − θ_a away from ±π, where the relative angle wraps (angle_limit.h: a known limit)
       if (std::abs(std::remainder(relative, 2.0 * M_PI)) > 3.0) continue;
