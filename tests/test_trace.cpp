@@ -3,6 +3,10 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -152,6 +156,62 @@ TEST_SUITE("Trace") {
       CHECK(std::signbit(back) == std::signbit(x));
       CHECK(text.find_first_of(".e") != std::string::npos);
     }
+  }
+
+  TEST_CASE("numbers are written as std::to_chars writes them, byte for byte") {
+    // Lamina's shortest-decimal writer (Schubfach) against libstdc++'s std::to_chars (Ryu), an
+    // independent implementation of the same definition: the shortest decimal that reads back,
+    // the nearer of two, fixed notation unless scientific is shorter. No tolerance: the bytes.
+    long compared = 0;
+    long differing = 0;
+    const auto compare = [&](double x) {
+      char expected[32];
+      const std::string wanted(expected, std::to_chars(expected, expected + sizeof expected, x).ptr);
+      const std::string written = shortest_number(x);
+      ++compared;
+      if (written != wanted && ++differing <= 5) CHECK_MESSAGE(written == wanted, "x = " << wanted);
+    };
+    std::uint64_t state = 20261203;  // splitmix64: the same doubles on every run
+    const auto next = [&state] {
+      std::uint64_t z = (state += 0x9e3779b97f4a7c15u);
+      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+      z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+      return z ^ (z >> 31);
+    };
+    const auto of_bits = [](std::uint64_t bits) {
+      double x;
+      std::memcpy(&x, &bits, sizeof x);
+      return x;
+    };
+    for (int i = 0; i < 1000000; ++i) {  // any bit pattern: every exponent, subnormals too
+      const double x = of_bits(next());
+      if (std::isfinite(x)) compare(x);
+    }
+    for (int i = 0; i < 300000; ++i) {  // short decimals, where trailing zeros and ties live
+      const int length = 1 + static_cast<int>(next() % 17);
+      std::uint64_t digits = next() % 100000000000000000u;
+      for (int d = length; d < 17; ++d) digits /= 10;
+      const std::string text = std::to_string(digits) + "e" + std::to_string(static_cast<int>(next() % 640) - 330);
+      compare(std::strtod(text.c_str(), nullptr));
+    }
+    for (int e = -1074; e <= 1023; ++e) {  // powers of two (the uneven intervals) and neighbours
+      const double p = std::ldexp(1.0, e);
+      for (double x : {p, std::nextafter(p, 0.0), std::nextafter(p, 1e308), -p}) compare(x);
+    }
+    for (int n = 0; n <= 100000; ++n) compare(n * 0.25);  // whole numbers, quarters, and zero
+    for (int j = -60; j <= 60; ++j) {
+      // 10^23 2^j lies halfway between two doubles: the one with an odd significand must not
+      // take its short decimal (the end of its interval is open; rounding goes to the even one)
+      const double halfway = std::ldexp(1e23, j);
+      for (double x : {halfway, std::nextafter(halfway, 0.0), std::nextafter(halfway, 1e308)}) compare(x);
+    }
+    for (double x : {-0.0, 1e21, 1e22, 1e23, 1e-5, 1e-4, 1e16, 1e17, 123456789012345680.0,
+                     std::numeric_limits<double>::max(), std::numeric_limits<double>::min(),
+                     std::numeric_limits<double>::denorm_min(), 1.0 / 3.0, 0.1 + 0.2}) {
+      compare(x);
+    }
+    CHECK(differing == 0);
+    CHECK(compared > 1400000);  // all of the above but the non-finite bit patterns
   }
 
   TEST_CASE("a JSON trace escapes what JSON asks of a name, and reads it back whole") {

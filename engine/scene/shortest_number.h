@@ -1,5 +1,6 @@
-// Numbers as text: the shortest text that reads back to the same double (std::to_chars), so a
-// trace holds the run's state exactly and a message shows the very value it refuses.
+// Numbers as text: the shortest text that reads back to the same double, written as
+// std::to_chars writes it, so a trace holds the run's state exactly and a message shows the
+// very value it refuses.
 #pragma once
 
 #include <string>
@@ -14,9 +15,10 @@ std::string shortest_number(double x);
 // trace reads as a floating-point number in JSON and spreadsheet tools alike.
 void append_shortest(std::string& out, double x);
 
-// Room enough for what append_shortest writes (at most 24 characters, "-1.7976931348623157e+308";
-// 32 as to_chars is given, and ".0").
-constexpr int shortest_float_length = 34;
+// Room enough for what append_shortest writes: at most 26 characters
+// ("-1.7976931348623157e+308" and ".0"), but the writer copies its digits in blocks of 24 and
+// uses up to 33 characters of room (shortest_number.cpp), and ".0" after them.
+constexpr int shortest_float_length = 35;
 // Writes what append_shortest appends at `first`, which has room for shortest_float_length
 // characters, and returns the end of it: for writers that buffer text themselves.
 char* write_shortest_float(char* first, double x);

@@ -7,41 +7,56 @@ namespace {
 
 Vec2 plane(const Vec3& v) { return {v.x(), v.y()}; }
 
-BodyState body_state(const std::string& name, const RigidBody& body) {
-  return {name, plane(body.x), planar_angle(body.q), plane(body.v), body.angular_velocity.z()};
+void fill_body_state(BodyState& state, const std::string& name, const RigidBody& body) {
+  state.name = name;
+  state.position = plane(body.x);
+  state.angle = planar_angle(body.q);
+  state.velocity = plane(body.v);
+  state.angular_velocity = body.angular_velocity.z();
 }
 
 // x with −0 written as 0 (a resting contact's C and λ are often −0, which reads as a sign).
 double unsigned_zero(double x) { return x + 0.0; }
 
-ContactState contact_state(const Scene& scene, const ContactInfo& c, double dt) {
-  return {{scene.bodies[c.bodies.first].name, scene.bodies[c.bodies.second].name},
-          plane(c.point),
-          plane(c.normal),
-          unsigned_zero(-c.separation),
-          unsigned_zero(c.lambda_normal * dt),  // λ is a force; the impulse over the step is λ Δt
-          unsigned_zero(c.lambda_tangent * dt),
-          c.cached,
-          origin_name(c.origin)};
+void fill_contact_state(ContactState& state, const Scene& scene, const ContactInfo& c, double dt) {
+  state.bodies[0] = scene.bodies[c.bodies.first].name;
+  state.bodies[1] = scene.bodies[c.bodies.second].name;
+  state.point = plane(c.point);
+  state.normal = plane(c.normal);
+  state.depth = unsigned_zero(-c.separation);
+  // λ is a force; the impulse over the step is λ Δt
+  state.normal_impulse = unsigned_zero(c.lambda_normal * dt);
+  state.tangent_impulse = unsigned_zero(c.lambda_tangent * dt);
+  state.cached = c.cached;
+  state.origin = origin_name(c.origin);
 }
 
 }  // namespace
 
 TraceStep trace_step(const Scene& scene, const World& world, long step) {
+  TraceStep record;
+  trace_step(scene, world, step, record);
+  return record;
+}
+
+void trace_step(const Scene& scene, const World& world, long step, TraceStep& record) {
   const std::vector<RigidBody>& bodies = world.bodies();
   assert(bodies.size() == scene.bodies.size());
-  TraceStep record{step, world.time(), {}, {}};
-  // room for every record at once: grown one by one, a pyramid's ~800 contacts were moved
-  // about ten times a step (a quarter of this function's instructions, callgrind)
-  record.bodies.reserve(bodies.size());
-  record.contacts.reserve(world.contacts().size());
+  record.step = step;
+  record.time = world.time();
+  // Resized, not cleared and grown: the states already there keep their names' memory.
+  std::size_t dynamic = 0;
+  for (const BodyDescription& body : scene.bodies) dynamic += body.is_static ? 0 : 1;
+  record.bodies.resize(dynamic);
+  std::size_t k = 0;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (!scene.bodies[i].is_static) record.bodies.push_back(body_state(scene.bodies[i].name, bodies[i]));
+    if (!scene.bodies[i].is_static) fill_body_state(record.bodies[k++], scene.bodies[i].name, bodies[i]);
   }
-  for (const ContactInfo& c : world.contacts()) {
-    record.contacts.push_back(contact_state(scene, c, world.settings().step.dt));
+  const std::vector<ContactInfo> contacts = world.contacts();  // made on each call: once
+  record.contacts.resize(contacts.size());
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    fill_contact_state(record.contacts[i], scene, contacts[i], world.settings().step.dt);
   }
-  return record;
 }
 
 }  // namespace lamina

@@ -44,5 +44,8 @@ struct TraceStep {
 // The record of the step just taken by a world built from `scene` (build_world: World body i
 // is scene.bodies[i]).
 TraceStep trace_step(const Scene& scene, const World& world, long step);
+// The same, written over `record`: a run that traces every step refills one record, its
+// lists and names keeping their memory from step to step.
+void trace_step(const Scene& scene, const World& world, long step, TraceStep& record);
 
 }  // namespace lamina

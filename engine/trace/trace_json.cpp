@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <string_view>
 
@@ -26,12 +27,16 @@ class LineWriter {
   LineWriter(const LineWriter&) = delete;
   LineWriter& operator=(const LineWriter&) = delete;
 
-  // `"key":`, after a comma unless it opens the object. Keys are short literals.
-  LineWriter& key(std::string_view name) {
-    make_room(name.size() + 4);
+  // `"key":`, after a comma unless it opens the object. Keys are literals: their length is a
+  // constant, and copying them a few moves.
+  template <std::size_t size>
+  LineWriter& key(const char (&name)[size]) {
+    constexpr std::size_t length = size - 1;
+    make_room(length + 4);
     if (last() != '{') *end_++ = ',';
     *end_++ = '"';
-    end_ = std::copy(name.begin(), name.end(), end_);
+    std::memcpy(end_, name, length);
+    end_ += length;
     *end_++ = '"';
     *end_++ = ':';
     return *this;
@@ -56,6 +61,22 @@ class LineWriter {
   // rest, UTF-8 included, as it is. (nlohmann's dump, one value per string, cost a tenth of the
   // trace's time on a pyramid.)
   void text(const std::string& s) {
+    if (s.size() < sizeof buffer_ / 2) {  // most names: copied as they are, unless one needs escapes
+      make_room(s.size() + 2);
+      char* const start = end_;
+      *end_++ = '"';
+      for (const char ch : s) {
+        if (ch == '"' || ch == '\\' || static_cast<unsigned char>(ch) < 0x20) {
+          end_ = start;
+          break;
+        }
+        *end_++ = ch;
+      }
+      if (end_ != start) {
+        *end_++ = '"';
+        return;
+      }
+    }
     raw('"');
     for (const char ch : s) {
       const auto c = static_cast<unsigned char>(ch);
@@ -130,8 +151,8 @@ void write_contact(LineWriter& w, const ContactState& c) {
 }
 
 // `"key":[item,item,...]` of the items written by `write`.
-template <typename Item, typename Write>
-void write_list(LineWriter& w, const char* key, const std::vector<Item>& items, Write write) {
+template <std::size_t size, typename Item, typename Write>
+void write_list(LineWriter& w, const char (&key)[size], const std::vector<Item>& items, Write write) {
   w.key(key).raw('[');
   for (std::size_t i = 0; i < items.size(); ++i) {
     if (i > 0) w.raw(',');

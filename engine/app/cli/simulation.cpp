@@ -66,7 +66,10 @@ void Simulation::step(WorldReport* report) {
     world_.step();
   }
   throw_if_diverged();
-  if (trace_ != nullptr) trace_->write(trace_step(scene_, world_, steps_taken_));
+  if (trace_ != nullptr) {
+    trace_step(scene_, world_, steps_taken_, record_);
+    trace_->write(record_);
+  }
   ++steps_taken_;
   if (progress_ != nullptr) progress_->advance();
 }

@@ -43,6 +43,7 @@ class Simulation {
   World world_;
   long steps_taken_ = 0;
   TraceWriter* trace_ = nullptr;       // where steps go, if anywhere
+  TraceStep record_;                   // the step being written to trace_, refilled each step
   ProgressBar* progress_ = nullptr;    // the bar that counts steps, if any
 };
 
