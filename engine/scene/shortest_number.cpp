@@ -212,15 +212,28 @@ void write_eight_digits(char* out, std::uint32_t m) {
   std::memcpy(out, &text, sizeof text);
 }
 
-// The last n ≤ 24 decimal digits of d < 10^24 (zeros before it if n is more than its digits)
-// at `out`, which has room for 24: the digits are made eight at a time and copied in one go.
-void write_digits(char* out, u64 d, int n) {
-  char padded[56] = {};  // 24 digits at [8, 32): 24 bytes can be copied from any start there
-  write_eight_digits(padded + 24, static_cast<std::uint32_t>(d % 100000000));
-  if (n > 8) write_eight_digits(padded + 16, static_cast<std::uint32_t>(d / 100000000 % 100000000));
-  if (n > 16) write_eight_digits(padded + 8, static_cast<std::uint32_t>(d / 10000000000000000u));
-  std::memcpy(out, padded + 32 - n, 24);
-}
+// The decimal digits of a number, made eight at a time into a buffer with room after them, so
+// that they go to their places in copies of one constant size (a few moves, not a call).
+class DigitText {
+ public:
+  static constexpr int block = 24;  // characters a copy writes: room the destination must have
+
+  // The last n ≤ 24 digits of d < 10^24 (zeros before it if n is more than its digits).
+  DigitText(u64 d, int n) : n_(n) {
+    const u64 high = d / 100000000;
+    const std::uint32_t eights[3] = {static_cast<std::uint32_t>(d - high * 100000000),
+                                     static_cast<std::uint32_t>(high % 100000000),
+                                     static_cast<std::uint32_t>(high / 100000000)};
+    for (int k = 0; k * 8 < n; ++k) write_eight_digits(text_ + 24 - 8 * k, eights[k]);
+    std::memset(text_ + 32, 0, block);  // what a copy takes after the last digit
+  }
+  // The digits from the `from`-th on (and what follows them, up to `block` characters) at `out`.
+  void copy(char* out, int from = 0) const { std::memcpy(out, text_ + 32 - n_ + from, block); }
+
+ private:
+  char text_[32 + block];  // the digits end at 32
+  int n_;
+};
 
 // The digits of a whole v = c 2^q, q ≥ 0, below 10^24, at `out` (room for 32); returns
 // their end.
@@ -229,52 +242,62 @@ char* write_whole_digits(char* out, u64 c, int q) {
   const u128 v = u128{c} << q;
   if (v <= ~u64{0}) {
     const int n = digit_count(static_cast<u64>(v));
-    write_digits(out, static_cast<u64>(v), n);
+    DigitText(static_cast<u64>(v), n).copy(out);
     return out + n;
   }
   const auto high = static_cast<u64>(v / ten_to_16);  // below 10^8
   const int n = digit_count(high);
-  write_digits(out, high, n);
-  write_digits(out + n, static_cast<u64>(v % ten_to_16), 16);
+  DigitText(high, n).copy(out);
+  DigitText(static_cast<u64>(v % ten_to_16), 16).copy(out + n);
   return out + n + 16;
 }
 
+// ".0" at `out`: an integer's text made to read as floating point; returns its end.
+char* point_zero(char* out) {
+  out[0] = '.';
+  out[1] = '0';
+  return out + 2;
+}
+
 // d, the shortest decimal of v = c 2^q, in std::to_chars' plain form: fixed notation ("0.001",
-// "250", "12.5") unless scientific ("1e-05", "2.5e+21") is shorter; `whole` is set when the
-// text is an integer ("250"). Like std::to_chars, a whole v past 2^53 is written with all its
-// digits ("316070159402654208", not "316070159402654200"): fixed notation is printf's %f.
-// The digits go straight to their places; `out` has room for 32 characters.
-char* write_decimal(char* out, Decimal d, u64 c, int q, bool& whole) {
+// "250", "12.5") unless scientific ("1e-05", "2.5e+21") is shorter, and with `float_form` an
+// integer's text with ".0" after it ("250.0"). Like std::to_chars, a whole v past 2^53 is
+// written with all its digits ("316070159402654208", not "316070159402654200"): fixed notation
+// is printf's %f.
+// `out` has room for 42 characters (digits.copy after 17 digits and a point).
+char* write_decimal(char* out, Decimal d, u64 c, int q, bool float_form) {
   const int n = digit_count(d.digits);
+  const DigitText digits(d.digits, n);
   const int exponent10 = d.exponent + n - 1;  // of the first digit
   const int magnitude = exponent10 < 0 ? -exponent10 : exponent10;
   const int scientific_length = n + (n > 1 ? 1 : 0) + 2 + (magnitude >= 100 ? 3 : 2);
   const int point = n + d.exponent;  // digits before the decimal point
   const int fixed_length = d.exponent >= 0 ? n + d.exponent : point > 0 ? n + 1 : 2 - d.exponent;
-  whole = false;
   if (fixed_length <= scientific_length) {
     if (d.exponent >= 0) {  // "250"
-      whole = true;
-      if (q > 0) return write_whole_digits(out, c, q);
-      write_digits(out, d.digits, n);
-      std::memset(out + n, '0', static_cast<std::size_t>(d.exponent));
-      return out + fixed_length;
+      if (q > 0) {
+        out = write_whole_digits(out, c, q);
+      } else {
+        digits.copy(out);
+        std::memset(out + n, '0', static_cast<std::size_t>(d.exponent));
+        out += fixed_length;
+      }
+      return float_form ? point_zero(out) : out;
     }
-    if (point > 0) {  // "12.5": the digits one place right, then the integer part back
-      write_digits(out + 1, d.digits, n);
-      for (int i = 0; i < point; ++i) out[i] = out[i + 1];
+    if (point > 0) {  // "12.5"
+      digits.copy(out);
+      digits.copy(out + point + 1, point);
       out[point] = '.';
       return out + fixed_length;
     }
-    out[0] = '0';  // "0.001"
-    out[1] = '.';
-    for (int i = 0; i < -point; ++i) out[2 + i] = '0';
-    write_digits(out + 2 - point, d.digits, n);
+    // "0.001": fixed is as short as scientific only while −point ≤ 3 (2 − e ≤ n + 5)
+    std::memcpy(out, "0.000", 5);
+    digits.copy(out + 2 - point);
     return out + fixed_length;
   }
-  write_digits(out + 1, d.digits, n);  // "2.5e+21": the first digit moved before the point
-  out[0] = out[1];
-  if (n > 1) out[1] = '.';
+  digits.copy(out);  // "2.5e+21": the first digit, the point, the others
+  out[1] = '.';
+  digits.copy(out + 2, 1);
   out += n > 1 ? n + 1 : 1;
   *out++ = 'e';
   *out++ = exponent10 < 0 ? '-' : '+';
@@ -286,45 +309,39 @@ char* write_decimal(char* out, Decimal d, u64 c, int q, bool& whole) {
 // Room for to_chars: a double takes at most 24 characters ("-2.2250738585072014e-308").
 constexpr int shortest_room = shortest_float_length - 2;
 
-// The one formatter of both forms: x written at `first`, which has shortest_room characters;
-// returns the end of it. `whole` is set when the text reads as an integer ("2", "-0").
-char* write_shortest(char* first, double x, bool& whole) {
+// The one formatter of both forms: x written at `first`, which has shortest_float_length
+// characters; returns the end of it. With `float_form`, a text that would read as an integer
+// ("2", "-0") has ".0" after it; "0.5", "1e+21", "inf" and "nan" read as floating point already.
+char* write_shortest(char* first, double x, bool float_form) {
   u64 bits;
   std::memcpy(&bits, &x, sizeof bits);
   const int biased_exponent = static_cast<int>((bits >> 52) & 0x7ff);
-  if (biased_exponent == 0 || biased_exponent == 0x7ff) {  // zero, subnormal, infinite, NaN
-    char* const end = std::to_chars(first, first + shortest_room, x).ptr;
-    whole = x == 0.0;
-    return end;
+  if ((bits << 1) == 0) {  // ±0, common in a trace
+    if (bits != 0) *first++ = '-';
+    *first++ = '0';
+    return float_form ? point_zero(first) : first;
+  }
+  if (biased_exponent == 0 || biased_exponent == 0x7ff) {  // subnormal, infinite, NaN
+    return std::to_chars(first, first + shortest_room, x).ptr;
   }
   if ((bits >> 63) != 0) *first++ = '-';
   const u64 c = (bits & ((u64{1} << 52) - 1)) | (u64{1} << 52);
   const int q = biased_exponent - 1075;
-  return write_decimal(first, shortest_decimal(c, q), c, q, whole);
+  return write_decimal(first, shortest_decimal(c, q), c, q, float_form);
 }
 
 }  // namespace
 
 std::string shortest_number(double x) {
-  char text[shortest_room];
-  bool whole = false;
-  return std::string(text, write_shortest(text, x, whole));
+  char text[shortest_float_length];
+  return std::string(text, write_shortest(text, x, false));
 }
 
 void append_shortest(std::string& out, double x) {
   char text[shortest_float_length];
-  out.append(text, write_shortest_float(text, x));
+  out.append(text, write_shortest(text, x, true));
 }
 
-char* write_shortest_float(char* first, double x) {
-  bool whole = false;
-  char* end = write_shortest(first, x, whole);
-  // "0.5", "1e+21", "inf" and "nan" read as floating point already; "2" and "-0" would not.
-  if (whole) {
-    *end++ = '.';
-    *end++ = '0';
-  }
-  return end;
-}
+char* write_shortest_float(char* first, double x) { return write_shortest(first, x, true); }
 
 }  // namespace lamina

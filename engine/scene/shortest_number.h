@@ -17,8 +17,8 @@ void append_shortest(std::string& out, double x);
 
 // Room enough for what append_shortest writes: at most 26 characters
 // ("-1.7976931348623157e+308" and ".0"), but the writer copies its digits in blocks of 24 and
-// uses up to 33 characters of room (shortest_number.cpp), and ".0" after them.
-constexpr int shortest_float_length = 35;
+// needs up to 43 characters of room (shortest_number.cpp), and ".0" after them.
+constexpr int shortest_float_length = 48;
 // Writes what append_shortest appends at `first`, which has room for shortest_float_length
 // characters, and returns the end of it: for writers that buffer text themselves.
 char* write_shortest_float(char* first, double x);

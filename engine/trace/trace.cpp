@@ -7,8 +7,14 @@ namespace {
 
 Vec2 plane(const Vec3& v) { return {v.x(), v.y()}; }
 
+// `to` made equal to `from`: most names are the same as in the step before (a record is
+// refilled each step), and comparing is cheaper than copying.
+void set_text(std::string& to, const std::string& from) {
+  if (to != from) to = from;
+}
+
 void fill_body_state(BodyState& state, const std::string& name, const RigidBody& body) {
-  state.name = name;
+  set_text(state.name, name);
   state.position = plane(body.x);
   state.angle = planar_angle(body.q);
   state.velocity = plane(body.v);
@@ -19,8 +25,8 @@ void fill_body_state(BodyState& state, const std::string& name, const RigidBody&
 double unsigned_zero(double x) { return x + 0.0; }
 
 void fill_contact_state(ContactState& state, const Scene& scene, const ContactInfo& c, double dt) {
-  state.bodies[0] = scene.bodies[c.bodies.first].name;
-  state.bodies[1] = scene.bodies[c.bodies.second].name;
+  set_text(state.bodies[0], scene.bodies[c.bodies.first].name);
+  set_text(state.bodies[1], scene.bodies[c.bodies.second].name);
   state.point = plane(c.point);
   state.normal = plane(c.normal);
   state.depth = unsigned_zero(-c.separation);
@@ -28,7 +34,8 @@ void fill_contact_state(ContactState& state, const Scene& scene, const ContactIn
   state.normal_impulse = unsigned_zero(c.lambda_normal * dt);
   state.tangent_impulse = unsigned_zero(c.lambda_tangent * dt);
   state.cached = c.cached;
-  state.origin = origin_name(c.origin);
+  const char* const origin = origin_name(c.origin);
+  if (state.origin != origin) state.origin = origin;  // most contacts keep theirs from step to step
 }
 
 }  // namespace

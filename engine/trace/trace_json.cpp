@@ -1,11 +1,11 @@
 #include "trace/trace_json.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
-#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -20,91 +20,89 @@ using Json = nlohmann::json;
 // 9 000 numbers a step, and trees made tracing several times slower than simulating. It goes
 // through a buffer of the writer's own, appended to `out` when full: appending each key, number
 // and bracket to `out` one by one cost 2.4 times the instructions (callgrind, 60 steps of the
-// pyramid: 248 M against 104 M, to_chars apart).
+// pyramid: 248 M against 104 M, to_chars apart). Each record (a body, a contact, the line's
+// head) first makes room for the most it can write, and its pieces are then written without a
+// check each: the keys with their punctuation as literals of constant length ("," "\"point\":"),
+// the numbers, the names (a third of the writer's instructions went to those checks).
 class LineWriter {
  public:
+  // Names are copied whole up to this many characters; a longer one (or one to escape) is
+  // escaped character by character, each making its own room.
+  static constexpr std::size_t long_name = 256;
+  // The most a record writes: its keys and brackets (under 160 characters), up to 8 numbers
+  // (with the room write_shortest_float asks) and 3 names.
+  static constexpr std::size_t record_room = 160 + 8 * shortest_float_length + 3 * (long_name + 2);
+
   explicit LineWriter(std::string& out) : out_(out) {}
   LineWriter(const LineWriter&) = delete;
   LineWriter& operator=(const LineWriter&) = delete;
 
-  // `"key":`, after a comma unless it opens the object. Keys are literals: their length is a
-  // constant, and copying them a few moves.
-  template <std::size_t size>
-  LineWriter& key(const char (&name)[size]) {
-    constexpr std::size_t length = size - 1;
-    make_room(length + 4);
-    if (last() != '{') *end_++ = ',';
-    *end_++ = '"';
-    std::memcpy(end_, name, length);
-    end_ += length;
-    *end_++ = '"';
-    *end_++ = ':';
-    return *this;
+  // Room for a record: what follows, up to the next call, is written without checks.
+  void make_room(std::size_t size) {
+    if (static_cast<std::size_t>(buffer_ + sizeof buffer_ - end_) < size) flush();
   }
+  // Text of a length known at compile time: a key with its punctuation, a bracket.
+  template <std::size_t size>
+  void literal(const char (&text)[size]) {
+    std::memcpy(end_, text, size - 1);
+    end_ += size - 1;
+  }
+  // A key (with its punctuation, as a literal) and its value.
+  template <std::size_t size, typename Value>
+  void field(const char (&key)[size], const Value& value) {
+    literal(key);
+    write(value);
+  }
+  void write(long n) { end_ = std::to_chars(end_, end_ + 24, n).ptr; }
   // A finite number in shortest round-trip form; JSON has no infinities or NaN: null.
-  void number(double x) {
+  void write(double x) {
     if (std::isfinite(x)) {
-      make_room(shortest_float_length);
       end_ = write_shortest_float(end_, x);
     } else {
-      raw("null");
+      literal("null");
     }
   }
-  void vec2(const Vec2& v) {
-    raw('[');
-    number(v[0]);
-    raw(',');
-    number(v[1]);
-    raw(']');
+  void write(const Vec2& v) {
+    *end_++ = '[';
+    write(v[0]);
+    *end_++ = ',';
+    write(v[1]);
+    *end_++ = ']';
   }
   // Quoted, with '"', '\\' and control characters escaped as JSON asks (RFC 8259, 7); the
   // rest, UTF-8 included, as it is. (nlohmann's dump, one value per string, cost a tenth of the
   // trace's time on a pyramid.)
-  void text(const std::string& s) {
-    if (s.size() < sizeof buffer_ / 2) {  // most names: copied as they are, unless one needs escapes
-      make_room(s.size() + 2);
-      char* const start = end_;
-      *end_++ = '"';
+  void write(const std::string& s) {
+    if (s.size() <= long_name) {  // most names: copied, then checked for what needs escapes
+      char* out = end_;
+      *out++ = '"';
+      bool plain = true;
       for (const char ch : s) {
-        if (ch == '"' || ch == '\\' || static_cast<unsigned char>(ch) < 0x20) {
-          end_ = start;
-          break;
-        }
-        *end_++ = ch;
+        plain &= ch != '"' && ch != '\\' && static_cast<unsigned char>(ch) >= 0x20;
+        *out++ = ch;
       }
-      if (end_ != start) {
-        *end_++ = '"';
+      if (plain) {
+        *out++ = '"';
+        end_ = out;
         return;
       }
     }
-    raw('"');
+    put('"');
     for (const char ch : s) {
       const auto c = static_cast<unsigned char>(ch);
       if (c == '"' || c == '\\') {
-        raw('\\');
-        raw(ch);
+        put('\\');
+        put(ch);
       } else if (c < 0x20) {
         char escaped[8];
         std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-        raw(escaped);
+        for (const char* e = escaped; *e != 0; ++e) put(*e);
       } else {
-        raw(ch);
+        put(ch);
       }
     }
-    raw('"');
-  }
-  void raw(char c) {
-    make_room(1);
-    *end_++ = c;
-  }
-  void raw(std::string_view s) {
-    if (s.size() > sizeof buffer_) {
-      flush();
-      out_ += s;
-      return;
-    }
-    make_room(s.size());
-    end_ = std::copy(s.begin(), s.end(), end_);
+    put('"');
+    make_room(record_room);  // the rest of the record, as its first make_room promised
   }
   // Appends what the buffer holds to `out`; the line is whole there once this is called last.
   void flush() {
@@ -113,52 +111,51 @@ class LineWriter {
   }
 
  private:
-  void make_room(std::size_t size) {
-    if (static_cast<std::size_t>(buffer_ + sizeof buffer_ - end_) < size) flush();
+  void put(char c) {  // with a check: for text that may be of any length
+    make_room(1);
+    *end_++ = c;
   }
-  char last() const { return end_ > buffer_ ? end_[-1] : out_.back(); }
 
   std::string& out_;
   char buffer_[4096];      // the text written since the last flush, up to end_
   char* end_ = buffer_;
 };
+static_assert(LineWriter::record_room < 4096, "a record fits the buffer");
 
 void write_body(LineWriter& w, const BodyState& b) {
-  w.raw('{');
-  w.key("name").text(b.name);
-  w.key("position").vec2(b.position);
-  w.key("angle").number(b.angle);
-  w.key("velocity").vec2(b.velocity);
-  w.key("angular_velocity").number(b.angular_velocity);
-  w.raw('}');
+  w.field(R"({"name":)", b.name);
+  w.field(R"(,"position":)", b.position);
+  w.field(R"(,"angle":)", b.angle);
+  w.field(R"(,"velocity":)", b.velocity);
+  w.field(R"(,"angular_velocity":)", b.angular_velocity);
+  w.literal("}");
 }
 
 void write_contact(LineWriter& w, const ContactState& c) {
-  w.raw('{');
-  w.key("bodies").raw('[');
-  w.text(c.bodies[0]);
-  w.raw(',');
-  w.text(c.bodies[1]);
-  w.raw(']');
-  w.key("point").vec2(c.point);
-  w.key("normal").vec2(c.normal);
-  w.key("depth").number(c.depth);
-  w.key("normal_impulse").number(c.normal_impulse);
-  w.key("tangent_impulse").number(c.tangent_impulse);
-  w.key("cached").raw(c.cached ? "true" : "false");
-  w.key("origin").text(c.origin);
-  w.raw('}');
+  w.field(R"({"bodies":[)", c.bodies[0]);
+  w.field(",", c.bodies[1]);
+  w.field(R"(],"point":)", c.point);
+  w.field(R"(,"normal":)", c.normal);
+  w.field(R"(,"depth":)", c.depth);
+  w.field(R"(,"normal_impulse":)", c.normal_impulse);
+  w.field(R"(,"tangent_impulse":)", c.tangent_impulse);
+  if (c.cached) {
+    w.literal(R"(,"cached":true)");
+  } else {
+    w.literal(R"(,"cached":false)");
+  }
+  w.field(R"(,"origin":)", c.origin);
+  w.literal("}");
 }
 
-// `"key":[item,item,...]` of the items written by `write`.
-template <std::size_t size, typename Item, typename Write>
-void write_list(LineWriter& w, const char (&key)[size], const std::vector<Item>& items, Write write) {
-  w.key(key).raw('[');
+// The items written by `write`, comma-separated, each a record.
+template <typename Item, typename Write>
+void write_list(LineWriter& w, const std::vector<Item>& items, Write write) {
   for (std::size_t i = 0; i < items.size(); ++i) {
-    if (i > 0) w.raw(',');
+    w.make_room(LineWriter::record_room);
+    if (i > 0) w.literal(",");
     write(w, items[i]);
   }
-  w.raw(']');
 }
 
 Vec2 vec2_of(const Json& j) { return Vec2(j.at(0).get<double>(), j.at(1).get<double>()); }
@@ -186,12 +183,16 @@ std::string trace_json_line(const TraceStep& step) {
 
 void append_trace_json_line(std::string& out, const TraceStep& step) {
   LineWriter w(out);
-  w.raw('{');
-  w.key("step").raw(std::to_string(step.step));
-  w.key("time").number(step.time);
-  write_list(w, "bodies", step.bodies, write_body);
-  write_list(w, "contacts", step.contacts, write_contact);
-  w.raw('}');
+  w.make_room(LineWriter::record_room);
+  w.field(R"({"step":)", step.step);
+  w.field(R"(,"time":)", step.time);
+  w.literal(R"(,"bodies":[)");
+  write_list(w, step.bodies, write_body);
+  w.make_room(LineWriter::record_room);
+  w.literal(R"(],"contacts":[)");
+  write_list(w, step.contacts, write_contact);
+  w.make_room(LineWriter::record_room);
+  w.literal("]}");
   w.flush();
 }
 
