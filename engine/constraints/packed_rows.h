@@ -45,9 +45,11 @@ using PackedRows = std::vector<PackedRow<N>>;
 
 // The bounds of a row for the current λ (λ[0..s)): fixed, or ±μ λc for a friction row
 // (eq. 3-26), λc being its contact row's λ or the sum over a manifold's contact rows.
-// `Row` is a packed row or a ConstraintRow.
+// `Row` is a packed row or a ConstraintRow. Always inlined: called once per row per sweep, and
+// GCC left it a call (a fifth of PGS's instructions on a pyramid went to it: 105 M → 84 M for
+// 60 steps of pyramid:20, the same λ bit for bit).
 template <class Row>
-std::array<double, 2> bounds_of(const Row& row, const double* lambda) {
+[[gnu::always_inline]] inline std::array<double, 2> bounds_of(const Row& row, const double* lambda) {
   if (row.friction_of < 0) return {row.lambda_min, row.lambda_max};
   double normal = lambda[row.friction_of];
   for (int k = 1; k < row.friction_count; ++k) normal += lambda[row.friction_of + k];

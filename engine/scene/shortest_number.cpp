@@ -220,11 +220,15 @@ class DigitText {
 
   // The last n ≤ 24 digits of d < 10^24 (zeros before it if n is more than its digits).
   DigitText(u64 d, int n) : n_(n) {
-    const u64 high = d / 100000000;
-    const std::uint32_t eights[3] = {static_cast<std::uint32_t>(d - high * 100000000),
-                                     static_cast<std::uint32_t>(high % 100000000),
-                                     static_cast<std::uint32_t>(high / 100000000)};
-    for (int k = 0; k * 8 < n; ++k) write_eight_digits(text_ + 24 - 8 * k, eights[k]);
+    const u64 high = d / 100000000;  // the digits before the last eight
+    const u64 top = high / 100000000;  // and before the last sixteen
+    write_eight_digits(text_ + 24, static_cast<std::uint32_t>(d - high * 100000000));
+    if (n > 8) write_eight_digits(text_ + 16, static_cast<std::uint32_t>(high - top * 100000000));
+    if (n == 17) {  // a double's longest: its first digit alone
+      text_[15] = static_cast<char>('0' + top);
+    } else if (n > 17) {
+      write_eight_digits(text_ + 8, static_cast<std::uint32_t>(top));
+    }
     std::memset(text_ + 32, 0, block);  // what a copy takes after the last digit
   }
   // The digits from the `from`-th on (and what follows them, up to `block` characters) at `out`.
