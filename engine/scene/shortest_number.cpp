@@ -9,11 +9,12 @@
 // The shortest decimal that reads back to a double, found by Raffaello Giulietti's Schubfach
 // method ("The Schubfach way to render doubles", 2020; the algorithm of Java's Double.toString
 // since JDK 19), written in the layout of std::to_chars: the same characters, byte for byte
-// (tests/test_trace.cpp compares the two on millions of doubles). It exists because a trace
-// writes about 9 000 numbers a step and std::to_chars spent 558 instructions on each, more
-// than the physics of the step they record (issue 19); this takes about a fifth of that.
-// Zero, subnormal, infinite and NaN values go to std::to_chars (a trace never has the middle
-// two; they are the corner of the method, where a few bits leave many decimals to choose from).
+// (tests/test_trace.cpp compares the two on 1.4 million doubles). It exists because a trace
+// writes about 9 000 numbers a step and std::to_chars spent 517 instructions on each, more
+// than the physics of the step they record (issue 19); this takes 311 (docs/performance.md).
+// Zero is written directly; subnormal, infinite and NaN values go to std::to_chars (a trace
+// never has them; subnormals are the corner of the method, where a few bits leave many
+// decimals to choose from).
 namespace lamina {
 namespace {
 

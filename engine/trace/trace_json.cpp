@@ -1,6 +1,5 @@
 #include "trace/trace_json.h"
 
-#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
