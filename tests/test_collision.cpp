@@ -353,6 +353,9 @@ TEST_SUITE("BroadPhase") {
     std::mt19937 rng(20240501);
     std::uniform_real_distribution<double> where(0.0, 20.0);
     std::uniform_real_distribution<double> size(0.05, 1.5);
+    // one memory for all the scenes: the first is sorted from scratch, the others from the
+    // order of the scene before (the insertion sort of a step)
+    SweepMemory memory;
     for (int scene = 0; scene < 50; ++scene) {
       std::vector<Aabb> boxes(200);
       for (Aabb& box : boxes) {
@@ -363,9 +366,8 @@ TEST_SUITE("BroadPhase") {
       boxes[1].min = Vec2(boxes[0].max.x(), boxes[0].min.y());
       boxes[1].max = boxes[1].min + Vec2(1.0, 1.0);
       boxes[3] = boxes[2];
-      std::vector<int> order;
       std::vector<BodyPair> pairs;
-      sort_and_sweep(boxes, order, pairs);
+      sort_and_sweep(boxes, memory, pairs);
       const std::vector<BodyPair> expected = brute_force(boxes);
       CHECK(pairs == expected);
       CHECK(std::find(pairs.begin(), pairs.end(), BodyPair{0, 1}) != pairs.end());
@@ -377,9 +379,9 @@ TEST_SUITE("BroadPhase") {
     const std::vector<Aabb> boxes{{Vec2(2.0, 0.0), Vec2(3.0, 1.0)},
                                   {Vec2(1.0, 0.0), Vec2(2.0, 1.0)},
                                   {Vec2(0.0, 0.0), Vec2(1.0, 1.0)}};
-    std::vector<int> order;
+    SweepMemory memory;
     std::vector<BodyPair> pairs;
-    sort_and_sweep(boxes, order, pairs);
+    sort_and_sweep(boxes, memory, pairs);
     REQUIRE(pairs.size() == 2);
     CHECK(pairs[0] == BodyPair{0, 1});
     CHECK(pairs[1] == BodyPair{1, 2});

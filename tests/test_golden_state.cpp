@@ -6,9 +6,10 @@
 // Why one value holds for every build: every target is compiled with -ffp-contract=off (the
 // top-level CMakeLists.txt), so no a·b + c is fused into one rounding where the CPU has FMA;
 // doubles are IEEE binary64 in SSE2 registers on x86-64 (no x87 80-bit intermediates); nothing
-// is built with -ffast-math; World::step runs on one thread; and every result is kept in
-// vectors in a fixed order (bodies as added, contact pairs sorted by body index), none in an
-// unordered container. The same constants pass in the Release build (build/, -O2), in the
+// is built with -ffast-math; a World's threads (WorldSettings::threads) split its work the
+// same way whatever their timing and keep every sum in the one-thread order; and every result
+// is kept in vectors in a fixed order (bodies as added, contact pairs sorted by body index),
+// none in an unordered container. The same constants pass in the Release build (build/, -O2), in the
 // CI's sanitizer build (build-asan/, RelWithDebInfo: -O2 -g, with ASan and UBSan instrumenting
 // the code), and in builds at -O0 and -O3 made by hand to check them. They hold for the default
 // x86-64 target, as the presets build it: with -march=native (AVX2, AVX-512, FMA) three of the
@@ -94,9 +95,11 @@ std::uint64_t fnv1a64(const std::vector<unsigned char>& bytes) {
   return hash;
 }
 
-std::vector<unsigned char> final_state(Scene scene, const std::string& solver) {
+std::vector<unsigned char> final_state(Scene scene, const std::string& solver, int threads = 1) {
   scene.solver = solver;
-  World world = build_world(scene, world_settings(scene));
+  WorldSettings settings = world_settings(scene);
+  settings.threads = threads;
+  World world = build_world(scene, settings);
   for (int step = 0; step < golden_steps; ++step) world.step();
   return state_bytes(world);
 }
@@ -115,6 +118,21 @@ TEST_SUITE("Determinism") {
         std::printf("    {\"%s\", \"%s\", 0x%016" PRIx64 "},\n", expected.scene, expected.solver, hash);
       }
       CHECK(hash == expected.hash);  // exact: the whole state, every bit
+    }
+  }
+
+  TEST_CASE("on 2 and 3 threads each scene keeps its golden hash") {
+    // WorldSettings::threads changes how fast a step is taken, never a bit of it
+    // (parallel/workers.h; tests/test_threads.cpp sweeps a pyramid big enough for PGS's threads).
+    for (const Golden& expected : golden) {
+      for (const int threads : {2, 3}) {
+        const std::string scene = expected.scene, solver = expected.solver;
+        CAPTURE(scene);
+        CAPTURE(solver);
+        CAPTURE(threads);
+        CHECK(fnv1a64(final_state(builtin_scene(expected.scene), expected.solver, threads)) ==
+              expected.hash);
+      }
     }
   }
 

@@ -108,6 +108,29 @@ double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodi
   return row_dot<6>(row.Jsp, v0, two ? velocity_of(bodies[row.Jmap[1]]) : v0, two);
 }
 
+template <int N>
+void Mlcp::note_row(const PackedRows<N>& rows, std::size_t i) {
+  const PackedRow<N>& row = rows[i];
+  if (i == 0) {
+    groups_.clear();
+    friction_on_own_bodies_ = true;
+  }
+  if (i == 0 || row.map != rows[i - 1].map) groups_.push_back({static_cast<int>(i), row.map});
+  for (int k = 0; row.friction_of >= 0 && k < row.friction_count; ++k) {
+    const std::size_t contact = static_cast<std::size_t>(row.friction_of + k);
+    if (contact >= i || rows[contact].map != row.map) friction_on_own_bodies_ = false;
+  }
+}
+
+void Mlcp::end_groups() {
+  const int count = row_count();
+  if (count == 0) {
+    groups_.clear();
+    friction_on_own_bodies_ = true;
+  }
+  groups_.push_back({count, {-1, -1}});
+}
+
 void Mlcp::assemble(const std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
                     const std::vector<Vec6>& unconstrained, double dt) {
   inertia_in_plane_.resize(bodies.size());
@@ -119,8 +142,12 @@ void Mlcp::assemble(const std::vector<RigidBody>& bodies, const std::vector<Cons
   body_count_ = static_cast<int>(bodies.size());
   visit_mutable([&](auto& packed) {
     packed.resize(rows.size());
-    for (size_t i = 0; i < rows.size(); ++i) pack_row(bodies, rows[i], unconstrained, dt, packed[i]);
+    for (size_t i = 0; i < rows.size(); ++i) {
+      pack_row(bodies, rows[i], unconstrained, dt, packed[i]);
+      note_row(packed, i);
+    }
   });
+  end_groups();
 }
 
 void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows) {
@@ -130,11 +157,13 @@ void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows) {
     packed.resize(rows.size());
     for (size_t i = 0; i < rows.size(); ++i) {
       packed[i] = source[static_cast<std::size_t>(rows[i])];
-      if (packed[i].friction_of < 0) continue;
-      // the new index of its first contact row (rows ascend: a binary search)
-      const auto at = std::lower_bound(rows.begin(), rows.end(), packed[i].friction_of);
-      assert(at != rows.end() && *at == packed[i].friction_of);
-      packed[i].friction_of = static_cast<int>(at - rows.begin());
+      if (packed[i].friction_of >= 0) {
+        // the new index of its first contact row (rows ascend: a binary search)
+        const auto at = std::lower_bound(rows.begin(), rows.end(), packed[i].friction_of);
+        assert(at != rows.end() && *at == packed[i].friction_of);
+        packed[i].friction_of = static_cast<int>(at - rows.begin());
+      }
+      note_row(packed, i);
     }
   };
   if (planar_) {
@@ -142,6 +171,7 @@ void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows) {
   } else {
     select(from.general_rows_, general_rows_);
   }
+  end_groups();
 }
 
 void Mlcp::assemble_rows_of(const Mlcp& from, const std::vector<int>& rows,

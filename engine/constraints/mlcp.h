@@ -38,6 +38,13 @@ void unconstrained_velocities(const std::vector<RigidBody>& bodies, double dt,
 // velocity along n), summed as every J X of the MLCP is (row_dot).
 double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodies);
 
+// A run of consecutive rows on the same bodies: a contact pair's contact and friction rows, a
+// joint's rows. A sweep keeps the run's a_b in registers (pgs_solver.h).
+struct RowGroup {
+  int first = 0;                  // its first row
+  std::array<int, 2> bodies{-1, -1};  // Jmap of its rows
+};
+
 class Mlcp {
  public:
   // Assembles the MLCP of eq. 3-16 for the rows, `unconstrained` being each body's
@@ -59,6 +66,12 @@ class Mlcp {
 
   int row_count() const;
   int body_count() const { return body_count_; }  // n, the bodies V spans
+  // The rows in runs on the same bodies, as assembled: group g is rows [groups()[g].first,
+  // groups()[g + 1].first); a last entry, past the groups, has first = row_count().
+  const std::vector<RowGroup>& groups() const { return groups_; }
+  // Whether every friction row's contact rows lie before it on its own bodies (a contact's
+  // always do): then an order kept per body orders the friction bounds too.
+  bool friction_on_own_bodies() const { return friction_on_own_bodies_; }
 
   // The text's form of row i:
   std::array<int, 2> bodies_of(int i) const;  // Jmap: body indices, [1] = −1 for a one-body row
@@ -97,12 +110,18 @@ class Mlcp {
   decltype(auto) visit_mutable(F&& f) {
     return planar_ ? f(planar_rows_) : f(general_rows_);
   }
+  // Records row i, just packed, in groups_ and friction_on_own_bodies_ (rows in order from 0).
+  template <int N>
+  void note_row(const PackedRows<N>& rows, std::size_t i);
+  void end_groups();
 
   bool planar_ = true;           // the layout in use: planar_rows_ or general_rows_
   int body_count_ = 0;           // n
   PackedRows<3> planar_rows_;    // [v_x v_y ω_z] blocks
   PackedRows<6> general_rows_;   // [v ω] blocks
   std::vector<unsigned char> inertia_in_plane_;  // per body: I⁻¹ turns z into z (scratch)
+  std::vector<RowGroup> groups_;           // runs of rows on the same bodies, and an end
+  bool friction_on_own_bodies_ = true;
 };
 
 // The MLCP of the rows for the bodies' velocities and accumulated forces now (eq. 3-16).

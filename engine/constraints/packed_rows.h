@@ -65,16 +65,23 @@ double row_dot(const PackedRow<N>& row, const std::vector<Block<N>>& per_body) {
   return row_dot<N>(row.J, per_body[row.map[0]], second, row.two_bodies());
 }
 
+// Row i's term of a = B λ: a_b += λ_i B_i's block, for each of its bodies (a2 unused for a
+// one-body row). A zero λ_i adds nothing and is skipped (a split-impulse solve starts from λ = 0).
+template <int N>
+void add_row_term(const PackedRow<N>& row, double lambda_i, Block<N>& a1, Block<N>& a2) {
+  if (lambda_i == 0.0) return;
+  a1 += lambda_i * row.B[0];
+  if (row.two_bodies()) a2 += lambda_i * row.B[1];
+}
+
 // a = B λ, one block per body: the text's TransposeMultiply, scaled by λ[i].
 template <int N>
 void transpose_multiply(const PackedRows<N>& rows, int body_count, const double* lambda,
                         std::vector<Block<N>>& a) {
   a.assign(static_cast<std::size_t>(body_count), Block<N>::Zero());
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (lambda[i] == 0.0) continue;  // adds nothing (a split-impulse solve starts from λ = 0)
     const PackedRow<N>& row = rows[i];
-    a[row.map[0]] += lambda[i] * row.B[0];
-    if (row.two_bodies()) a[row.map[1]] += lambda[i] * row.B[1];
+    add_row_term(row, lambda[i], a[row.map[0]], a[row.two_bodies() ? row.map[1] : row.map[0]]);
   }
 }
 

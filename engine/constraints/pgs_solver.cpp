@@ -5,27 +5,36 @@
 namespace lamina {
 namespace {
 
-// One Gauss-Seidel sweep over the rows, each λ_i projected onto its bounds. Consecutive rows on
-// the same bodies (a pair's contact rows and their friction rows) keep their bodies' a_b in
-// local variables: the same arithmetic, without a trip through memory per row.
-template <int N, bool ClampIncrement>
-void sweep(const PackedRows<N>& packed, std::vector<Block<N>>& a_of_body, double* lambda) {
-  // raw pointers: the stores to λ cannot then be taken to move the vectors' buffers
-  const PackedRow<N>* rows = packed.data();
-  Block<N>* a = a_of_body.data();
-  const size_t count = packed.size();
-  for (size_t i = 0; i < count;) {
-    const int b1 = rows[i].map[0];
-    const int b2 = rows[i].map[1];
-    Block<N> a1 = a[b1];
-    Block<N> a2 = b2 >= 0 ? a[b2] : Block<N>::Zero();
-    for (; i < count && rows[i].map[0] == b1 && rows[i].map[1] == b2; ++i) {
-      pgs_row<N, ClampIncrement>(rows[i], i, lambda, a1, a2);
+// What a pass over one group of rows does: a PGS sweep of its rows, or (on threads, before the
+// first sweep) its rows' terms of a = B λ.
+enum class Pass { sweep, transpose };
+
+// One pass over the rows [first, last) of one group, on the same bodies (a pair's contact rows
+// and their friction rows): the group keeps its bodies' a_b in local variables, the same
+// arithmetic as row by row through memory, without a trip through memory per row. Raw
+// pointers: the stores to λ cannot then be taken to move the vectors' buffers.
+template <int N, bool ClampIncrement, Pass What>
+void pass_group(const PackedRow<N>* rows, int first, int last, Block<N>* a, double* lambda) {
+  const int b1 = rows[first].map[0];
+  const int b2 = rows[first].map[1];
+  Block<N> a1 = a[b1];
+  Block<N> a2 = b2 >= 0 ? a[b2] : Block<N>::Zero();
+  for (int i = first; i < last; ++i) {
+    if constexpr (What == Pass::sweep) {
+      pgs_row<N, ClampIncrement>(rows[i], static_cast<std::size_t>(i), lambda, a1, a2);
+    } else {
+      add_row_term(rows[i], lambda[i], a1, a2);
     }
-    a[b1] = a1;
-    if (b2 >= 0) a[b2] = a2;
   }
+  a[b1] = a1;
+  if (b2 >= 0) a[b2] = a2;
 }
+
+// The rows are swept on threads when each thread has a few hundred rows to sweep, and when at
+// most one group in max_wait_share waits on another thread (a pyramid of base 20 on 3 threads:
+// one in 10); otherwise the threads would mostly wait on each other.
+constexpr int threaded_min_rows = 512;
+constexpr int max_wait_share = 8;
 
 // The pitfall lambda-b1: the text's TransposeMultiply as written, scaling row i's blocks by
 // λ[b1] and λ[b2], λ indexed by body instead of by row. Where a body index is past the rows the
@@ -50,25 +59,141 @@ std::vector<Block<3>>& PgsSolver::a<3>() { return planar_a_; }
 template <>
 std::vector<Block<6>>& PgsSolver::a<6>() { return general_a_; }
 
+void PgsSolver::use_workers(Workers* workers) {
+  workers_ = workers != nullptr && workers->count() > 1 ? workers : nullptr;
+  progress_.reset(workers_ != nullptr ? new Progress[workers_->count()] : nullptr);
+}
+
+bool PgsSolver::plan_threads(const Mlcp& mlcp) {
+  const std::vector<RowGroup>& groups = mlcp.groups();
+  const int group_count = static_cast<int>(groups.size()) - 1;
+  const int threads = workers_->count();
+  const long rows = mlcp.row_count();
+  if (rows < threaded_min_rows || !mlcp.friction_on_own_bodies()) return false;
+  // the parts: consecutive groups, each part about its share of the rows
+  part_of_group_.resize(static_cast<std::size_t>(group_count));
+  for (int g = 0; g < group_count; ++g) {
+    part_of_group_[g] = static_cast<int>(std::min<long>(threads - 1, groups[g].first * threads / rows));
+  }
+  thread_first_.resize(static_cast<std::size_t>(threads) + 1);
+  for (int t = 0, g = 0; t <= threads; ++t) {
+    while (g < group_count && part_of_group_[g] < t) ++g;
+    thread_first_[t] = g;
+  }
+  // the waits: the group before g on each of its bodies, this pass's or the last of the pass
+  // before, when another thread takes it
+  last_group_of_body_.assign(static_cast<std::size_t>(mlcp.body_count()), -1);
+  for (int g = 0; g < group_count; ++g) {
+    for (const int body : groups[g].bodies) {
+      if (body >= 0) last_group_of_body_[body] = g - group_count;  // in the pass before
+    }
+  }
+  group_waits_.assign(static_cast<std::size_t>(group_count), GroupWait{});
+  waited_on_.assign(static_cast<std::size_t>(group_count), 0);
+  int waits = 0;
+  for (int g = 0; g < group_count; ++g) {
+    GroupWait& wait = group_waits_[g];
+    for (int k = 0; k < 2; ++k) {
+      const int body = groups[g].bodies[k];
+      if (body < 0) continue;
+      const int before = last_group_of_body_[body];
+      last_group_of_body_[body] = g;
+      const int g_before = before < 0 ? before + group_count : before;
+      const int theirs = part_of_group_[g_before];
+      if (theirs == part_of_group_[g]) continue;
+      waited_on_[g_before] = 1;
+      ++waits;
+      if (k == 1 && wait.thread[0] == theirs) {
+        wait.after[0] = std::max(wait.after[0], static_cast<long>(before) + 1);
+      } else {
+        wait.thread[k] = theirs;
+        wait.after[k] = static_cast<long>(before) + 1;
+      }
+    }
+  }
+  // rows whose bodies are spread over the whole order (bodies added in no spatial order) would
+  // make the threads wait at every few groups: then one thread is faster
+  return waits <= group_count / max_wait_share;
+}
+
+// One Gauss-Seidel sweep over the rows, each λ_i projected onto its bounds, group by group.
+template <int N, bool ClampIncrement>
+void PgsSolver::sweep(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
+                      std::vector<Block<N>>& a_of_body, double* lambda) const {
+  for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
+    pass_group<N, ClampIncrement, Pass::sweep>(rows.data(), groups[g].first, groups[g + 1].first,
+                                               a_of_body.data(), lambda);
+  }
+}
+
+// On the workers' threads: a = B λ (pass 0), then `sweeps` sweeps (passes 1, 2, …), each thread
+// taking its own groups pass after pass and waiting where plan_threads found a group of another
+// thread before one of its own. Thread t starts pass k once thread t − 1 has passed the rows its
+// first rows share bodies with: a wavefront, each part at most a pass behind the one before it.
+template <int N, bool ClampIncrement>
+void PgsSolver::solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
+                                 std::vector<Block<N>>& a_of_body, double* lambda, int sweeps) {
+  const std::vector<RowGroup>& groups = mlcp.groups();
+  const int threads = workers_->count();
+  const long group_count = static_cast<long>(groups.size()) - 1;
+  a_of_body.assign(static_cast<std::size_t>(mlcp.body_count()), Block<N>::Zero());
+  for (int t = 0; t < threads; ++t) progress_[t].reset();
+  workers_->run([&](int t) {
+    Progress& mine = progress_[t];
+    std::array<long, 64> seen{};  // the last count read from each thread
+    for (long k = 0; k <= sweeps; ++k) {
+      for (int g = thread_first_[t]; g < thread_first_[t + 1]; ++g) {
+        const GroupWait& wait = group_waits_[g];
+        for (int e = 0; e < 2; ++e) {
+          const int u = wait.thread[e];
+          if (u < 0) continue;
+          const long needed = k * group_count + wait.after[e];
+          if (seen[u] < needed) seen[u] = progress_[u].wait_until(needed);
+        }
+        if (k == 0) {
+          pass_group<N, ClampIncrement, Pass::transpose>(rows.data(), groups[g].first,
+                                                         groups[g + 1].first, a_of_body.data(), lambda);
+        } else {
+          pass_group<N, ClampIncrement, Pass::sweep>(rows.data(), groups[g].first,
+                                                     groups[g + 1].first, a_of_body.data(), lambda);
+        }
+        if (waited_on_[g]) mine.publish(k * group_count + g + 1);
+      }
+    }
+  });
+}
+
 void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& settings,
                       SweepResult& result, Pitfalls pitfalls) {
   const bool measure = settings.record_sweeps || settings.tolerance > 0.0;
+  const bool threaded = workers_ != nullptr && !measure && !pitfalls.has(Pitfall::lambda_b1) &&
+                        plan_threads(mlcp);
+  const bool clamp_increment = pitfalls.has(Pitfall::clamp_increment);
+  swept_on_threads_ = threaded;
   mlcp.visit([&](const auto& rows) {
     constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
     planar_ = N == 3;
     std::vector<Block<N>>& a_of_body = a<N>();
+    if (threaded) {
+      if (clamp_increment) {
+        solve_on_threads<N, true>(mlcp, rows, a_of_body, lambda, settings.iterations);
+      } else {
+        solve_on_threads<N, false>(mlcp, rows, a_of_body, lambda, settings.iterations);
+      }
+      result.iterations = settings.iterations;
+      return;
+    }
     // λ = λ_exp: a = B λ (the text's TransposeMultiply)
     if (pitfalls.has(Pitfall::lambda_b1)) {
       transpose_multiply_text_slip(rows, mlcp.body_count(), lambda, a_of_body);
     } else {
       transpose_multiply(rows, mlcp.body_count(), lambda, a_of_body);
     }
-    const bool clamp_increment = pitfalls.has(Pitfall::clamp_increment);
     for (int iter = 0; iter < settings.iterations; ++iter) {
       if (clamp_increment) {
-        sweep<N, true>(rows, a_of_body, lambda);
+        sweep<N, true>(rows, mlcp.groups(), a_of_body, lambda);
       } else {
-        sweep<N, false>(rows, a_of_body, lambda);
+        sweep<N, false>(rows, mlcp.groups(), a_of_body, lambda);
       }
       result.iterations = iter + 1;
       if (!measure) continue;

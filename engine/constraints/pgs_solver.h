@@ -9,15 +9,27 @@
 //              a ← a + (λ_i new − old) B_i
 // The text's pseudo-code with its two faults mended: TransposeMultiply scales by λ[i] (the text
 // writes λ[b1], λ[b2]), and a one-body row (Jmap[1] = −1) never reads a[−1].
+//
+// On more than one thread (use_workers) the rows are cut into as many parts as threads, each a
+// run of consecutive rows, and each thread sweeps its part, sweep after sweep. A row waits only
+// where the row before it on one of its bodies, in the one-thread order (this sweep's, or the
+// sweep before's), belongs to another part: until that part's thread has swept it. So every
+// a_b a row reads holds the value it holds in the one-thread order, and so does every λ (a
+// friction row's contact rows are on its bodies): λ is the same bit for bit on any number of
+// threads. Contact rows come in the order of their bodies' indices, so in a scene built bottom
+// up (a pyramid, a stack) a part shares bodies with the parts next to it only along one cut,
+// and the threads run as a wavefront, part t a little behind part t − 1.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "constraints/mlcp.h"
 #include "constraints/sweep_settings.h"
 #include "motion/pitfalls.h"
+#include "parallel/workers.h"
 
 namespace lamina {
 
@@ -61,13 +73,45 @@ class PgsSolver {
   // rows, [v; ω].
   Vec6 velocity_change(int body) const;
 
+  // Sweeps on the threads of `workers` from now on (above) when a solve runs every sweep (no
+  // tolerance, nothing recorded), has rows enough and parts that seldom wait on each other;
+  // otherwise, or with nullptr or one thread, on the calling thread. The same λ either way.
+  // `workers` must outlive the solves.
+  void use_workers(Workers* workers);
+  // Whether the last solve swept on the workers' threads.
+  bool swept_on_threads() const { return swept_on_threads_; }
+
  private:
+  // Where the thread of a group waits before its pass k over it, for each of its bodies whose
+  // group before it (in the one-thread order) another thread takes: until `thread` has
+  // published k·G + `after` (G groups a pass; `after` ≤ 0 for a group of the pass before).
+  struct GroupWait {
+    std::array<int, 2> thread{-1, -1};
+    std::array<long, 2> after{0, 0};
+  };
+
   template <int N>
   std::vector<Block<N>>& a();
+  bool plan_threads(const Mlcp& mlcp);  // the parts and their waits; false: one thread is better
+  template <int N, bool ClampIncrement>
+  void sweep(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
+             std::vector<Block<N>>& a_of_body, double* lambda) const;
+  template <int N, bool ClampIncrement>
+  void solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
+                        std::vector<Block<N>>& a_of_body, double* lambda, int sweeps);
 
   bool planar_ = true;                 // the layout of the last solve
+  bool swept_on_threads_ = false;      // how the last solve swept
   std::vector<Block<3>> planar_a_;     // a in the planar layout
   std::vector<Block<6>> general_a_;    // a in the general layout
+  // On threads: thread t takes the groups (Mlcp::groups) [thread_first_[t], thread_first_[t + 1]).
+  Workers* workers_ = nullptr;            // the threads, or none
+  std::unique_ptr<Progress[]> progress_;  // per thread: k·G + g + 1 once its pass k took group g
+  std::vector<int> thread_first_;
+  std::vector<int> part_of_group_;        // the thread that sweeps group g
+  std::vector<GroupWait> group_waits_;    // where group g waits
+  std::vector<unsigned char> waited_on_;  // another thread waits for group g: publish it
+  std::vector<int> last_group_of_body_;   // scratch of plan_threads
 };
 
 // Solves the MLCP from the guess λ_exp (warm start) in a solver of its own; a caller solving

@@ -25,12 +25,20 @@ struct BodyPair {
   bool operator==(const BodyPair& o) const { return first == o.first && second == o.second; }
 };
 
-// The pairs of overlapping (or touching) boxes, sorted. `order` holds the body indices sorted by
-// min.x: empty (or of another size) on the first call, then last call's order for the same
-// bodies, which an insertion sort brings up to date in about one pass when bodies move a little
-// between steps (sort and sweep's frame coherence). Passing the same vector every step also
-// keeps the step free of allocation.
-void sort_and_sweep(const std::vector<Aabb>& boxes, std::vector<int>& order,
+// What the broad phase keeps from call to call: the bodies' order by min.x, which the next call
+// starts its sort from, and room for its working copies, so that a step allocates nothing.
+struct SweepMemory {
+  std::vector<int> order;        // body indices sorted by min.x as of the last call
+  std::vector<Aabb> sorted;      // their boxes in that order, side by side for the sweep
+  std::vector<BodyPair> found;   // the pairs in the order the sweep meets them
+  std::vector<int> first_count;  // per body, how many pairs have it first (the pairs' sort)
+};
+
+// The pairs of overlapping (or touching) boxes, sorted. `memory.order` holds the body indices
+// sorted by min.x: empty (or of another size) on the first call, then last call's order for the
+// same bodies, which an insertion sort brings up to date in about one pass when bodies move a
+// little between steps (sort and sweep's frame coherence).
+void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
                     std::vector<BodyPair>& pairs);
 
 }  // namespace lamina

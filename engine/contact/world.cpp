@@ -24,6 +24,8 @@ bool is_planar(const RigidBody& b) {
 
 void validate(const WorldSettings& s) {
   validate(s.step);
+  require(s.threads >= 1 && s.threads <= 64,
+          "world: threads must be 1 to 64, got " + std::to_string(s.threads));
   require(s.position_iterations >= 1,
           "world: position_iterations must be ≥ 1, got " + std::to_string(s.position_iterations));
   validate(s.contact);
@@ -40,6 +42,10 @@ World::World(const WorldSettings& settings) : settings_(settings) {
     settings_.contact.slop = 0.0;
   }
   if (settings_.method) method_ = settings_.method();
+  if (settings_.threads > 1) {
+    workers_ = std::make_unique<Workers>(settings_.threads);
+    pgs_.use_workers(workers_.get());
+  }
 }
 
 World::~World() = default;
@@ -144,10 +150,29 @@ void World::detect_collisions() {
     poses_[i] = planar_pose(bodies_[i]);
     boxes_[i] = bounding_box(shapes_[i], poses_[i]);
   }
-  sort_and_sweep(boxes_, sweep_order_, candidate_pairs_);
-  fresh_.clear();
+  sort_and_sweep(boxes_, sweep_memory_, candidate_pairs_);
+  if (workers_ == nullptr) {
+    find_collisions(0, candidate_pairs_.size(), fresh_);
+    return;
+  }
+  // on threads: each its share of the candidates, in order, its collisions appended in order
+  const int threads = workers_->count();
+  fresh_of_thread_.resize(static_cast<std::size_t>(threads));
+  workers_->run([&](int t) {
+    const auto [first, last] = share_of(candidate_pairs_.size(), t, threads);
+    find_collisions(first, last, t == 0 ? fresh_ : fresh_of_thread_[t]);
+  });
+  for (int t = 1; t < threads; ++t) {
+    fresh_.insert(fresh_.end(), fresh_of_thread_[t].begin(), fresh_of_thread_[t].end());
+  }
+}
+
+void World::find_collisions(std::size_t first, std::size_t last,
+                            std::vector<FreshCollision>& found) const {
+  found.clear();
   size_t cursor = 0;  // the cache's pairs, walked along with the sorted candidates
-  for (const BodyPair& pair : candidate_pairs_) {
+  for (std::size_t i = first; i < last; ++i) {
+    const BodyPair& pair = candidate_pairs_[i];
     if (bodies_[pair.first].is_static() && bodies_[pair.second].is_static()) continue;
     if (std::binary_search(jointed_.begin(), jointed_.end(), pair)) continue;
     // With the cache off there is nothing to break ties against: a first contact every step.
@@ -156,7 +181,7 @@ void World::detect_collisions() {
     const std::optional<Collision> collision =
         collide(shapes_[pair.first], poses_[pair.first], shapes_[pair.second],
                 poses_[pair.second], cached, settings_.cache.ties);
-    if (collision) fresh_.push_back({pair, *collision});
+    if (collision) found.push_back({pair, *collision});
   }
 }
 

@@ -47,6 +47,9 @@ struct WorldSettings {
   CacheSettings cache;                  // the contact cache on or off, and its margins
   // Makes the method that takes steps 5–7 (step_method.h); empty: the World's own PGS step.
   std::function<std::unique_ptr<StepMethod>()> method;
+  // Threads that take each step, 1 to 64: the narrow phase split between them, PGS's sweeps a
+  // pipeline (pgs_solver.h). Any number gives the same state bit for bit; only the time differs.
+  int threads = 1;
 };
 
 class World {
@@ -109,6 +112,8 @@ class World {
   void advance(WorldReport* report);
   void apply_forces();
   void detect_collisions();
+  // The narrow phase of candidate_pairs_[first, last): their collisions, in order.
+  void find_collisions(std::size_t first, std::size_t last, std::vector<FreshCollision>& found) const;
   void update_cache();
   void build_rows();
   void solve(WorldReport* report);
@@ -131,15 +136,17 @@ class World {
   // nothing: tests/test_step_allocations.cpp).
   std::vector<Pose2> poses_;                 // each body's planar pose at t
   std::vector<Aabb> boxes_;                  // each body's bounding box at t
-  std::vector<int> sweep_order_;             // bodies by min.x, kept for the next sort
+  SweepMemory sweep_memory_;                 // bodies by min.x, kept for the next sort
   std::vector<BodyPair> candidate_pairs_;    // the broad phase's pairs
   std::vector<FreshCollision> fresh_;        // the narrow phase's deepest points
+  std::vector<std::vector<FreshCollision>> fresh_of_thread_;  // on threads: threads 1.., theirs
   std::vector<ConstraintRow> rows_;          // the rows as written: contacts', then joints'
   std::size_t first_joint_row_ = 0;          // where the joints' rows start in rows_
   std::vector<Vec6> unconstrained_;          // V/Δt + M⁻¹ F_ext per body (eq. 3-16), m/s², rad/s²
   Mlcp velocity_;                            // the velocity MLCP (eq. 3-16), assembled once
   std::vector<double> lambda_;               // its λ, in N: the warm start λ_exp, then solved
   SplitImpulse split_impulse_;               // the position MLCP and each body's push-out
+  std::unique_ptr<Workers> workers_;         // the threads past the first, when settings ask
   PgsSolver pgs_;                            // the sweeps' a = B λ, for both MLCPs in turn
   std::vector<RowRange> joint_rows_;         // each joint's rows, for a StepMethod
 };

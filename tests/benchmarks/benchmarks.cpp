@@ -64,6 +64,15 @@ void lamina_islands_pyramid(benchmark::State& state) {
   }
 }
 
+// Lamina's `pgs` at Box2D's sweeps on two threads (issue 19): range(0) bodies in the base.
+void lamina_pyramid_two_threads(benchmark::State& state) {
+  const int base = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    record(state, {"Lamina 2 threads", base, 8},
+           run_lamina_pyramid(PyramidShape::boxes, base, 8, "pgs", 2));
+  }
+}
+
 void lamina_pyramid(benchmark::State& state) { lamina_run(state, PyramidShape::boxes); }
 void box2d_pyramid(benchmark::State& state) { box2d_run(state, PyramidShape::boxes); }
 void lamina_hexagon_pyramid(benchmark::State& state) { lamina_run(state, PyramidShape::hexagons); }
@@ -104,6 +113,9 @@ const auto* const box2d_boxes =
 // Issue 19's peers: Lamina's default method, and Box2D v3 when it is built in.
 const auto* const islands_boxes = over_bases(
     benchmark::RegisterBenchmark("lamina_islands_pyramid", lamina_islands_pyramid), {20, 40, 80});
+const auto* const two_threads_boxes = over_bases(
+    benchmark::RegisterBenchmark("lamina_pyramid_two_threads", lamina_pyramid_two_threads),
+    {20, 40, 80});
 #ifdef LAMINA_HAVE_BOX2D_V3
 const auto* const v3_boxes =
     over_bases(benchmark::RegisterBenchmark("box2d_v3_pyramid", box2d_v3_pyramid), {20, 40, 80});
@@ -158,7 +170,8 @@ int main(int argc, char** argv) {
     measurements.warm_starts.push_back(measure_warm_start(40, 100, 3, {0.1, 0.01}, 5000));
     measurements.load_after = load_average();
     const Tables tables = make_tables(measurements);
-    for (const char* name : {"machine", "pyramids", "peers", "scaling", "warm_start", "hexagons"}) {
+    for (const char* name :
+         {"machine", "pyramids", "peers", "threads", "scaling", "warm_start", "hexagons"}) {
       std::cout << "\n" << tables.at(name);
     }
     if (!report.empty()) write_tables(tables, report);

@@ -86,11 +86,12 @@ double PyramidRun::us_per_row_sweep() const {
 }
 
 PyramidRun run_lamina_pyramid(PyramidShape shape, int base, int iterations,
-                              const std::string& solver) {
+                              const std::string& solver, int threads) {
   Scene scene = pyramid_of(shape, base);
   scene.solver = solver;
   WorldSettings settings = world_settings(scene);
   settings.step.iterations = iterations;
+  settings.threads = threads;
   World world = build_world(scene, settings);
   const auto where = [&] {
     Positions p;

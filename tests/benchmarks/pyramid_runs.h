@@ -54,9 +54,10 @@ struct PyramidRun {
 };
 
 // Lamina (World) with the given PGS sweeps per step and the method `solver` (`pgs`, the text's
-// PGS with Lamina's additions, or `islands`, the default); position sweeps stay 3.
+// PGS with Lamina's additions, or `islands`, the default), on `threads` threads
+// (WorldSettings::threads); position sweeps stay 3.
 PyramidRun run_lamina_pyramid(PyramidShape shape, int base, int iterations,
-                              const std::string& solver = "pgs");
+                              const std::string& solver = "pgs", int threads = 1);
 // Box2D 2.4.1 at 8 velocity / 3 position iterations.
 PyramidRun run_box2d_pyramid(PyramidShape shape, int base);
 

@@ -194,6 +194,28 @@ std::string peers_table(const Measurements& m) {
   return out.str();
 }
 
+// Issue 19's two threads: wall-clock time per step of `pgs` at 8 / 3 on one thread and on two
+// (the CPU time of the stepping thread leaves out the other's work).
+std::string threads_table(const Measurements& m) {
+  std::ostringstream out;
+  out << "| pyramid | one thread, wall ms per step | two threads, wall ms per step | speed-up "
+         "| two threads, CPU ms of the stepping thread |\n|---|---|---|---|---|\n";
+  std::ostringstream verdicts;
+  for (const int base : bases(m, PyramidShape::boxes)) {
+    const std::optional<Summary> one = summary(m, {"Lamina", base, box2d_iterations});
+    const std::optional<Summary> two = summary(m, {"Lamina 2 threads", base, box2d_iterations});
+    if (!one || !two) continue;
+    const double speed_up = one->wall_ms / two->wall_ms;
+    out << "| " << base << " | " << fixed(one->wall_ms, 3) << " | " << fixed(two->wall_ms, 3)
+        << " | " << fixed(speed_up, 2) << "× | " << fixed(two->ms, 3) << " |\n";
+    verdicts << "- base " << base << ": speed-up " << fixed(speed_up, 2) << "× "
+             << (speed_up >= 1.7 ? "≥ 1.7: met" : "< 1.7: missed") << ".\n";
+  }
+  out << "\nMedians of the repetitions; the same state bit for bit on both (tests/test_threads.cpp).\n"
+      << verdicts.str();
+  return out.str();
+}
+
 // Least-squares slope of ln(ms) against ln(velocity rows): 1 is linear growth.
 std::optional<double> growth_exponent(const Measurements& m, const std::string& engine) {
   std::vector<std::pair<double, double>> points;
@@ -366,6 +388,7 @@ Tables make_tables(const Measurements& m) {
   return {{"machine", machine_table(m)},
           {"pyramids", pyramids_table(m)},
           {"peers", peers_table(m)},
+          {"threads", threads_table(m)},
           {"scaling", scaling_table(m)},
           {"warm_start", warm_start_table(m)},
           {"hexagons", hexagons_table(m)},

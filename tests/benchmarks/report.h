@@ -13,8 +13,8 @@ namespace lamina {
 // Which engine at which pyramid and sweeps; Box2D 2.4.1's sweeps are always 8 / 3, Box2D v3's
 // "sweeps" are its substeps.
 struct RunKey {
-  std::string engine;                        // "Lamina" (pgs), "Lamina islands", "Box2D" (2.4.1)
-                                             // or "Box2D v3"
+  std::string engine;                        // "Lamina" (pgs), "Lamina 2 threads" (pgs),
+                                             // "Lamina islands", "Box2D" (2.4.1) or "Box2D v3"
   int base = 0;                              // bodies in the pyramid's base
   int iterations = 0;                        // velocity sweeps per step
   PyramidShape shape = PyramidShape::boxes;  // what the pyramid is built of
@@ -29,7 +29,8 @@ struct Measurements {
   std::string load_after;                          // and when they ended
 };
 
-// Named tables: "machine", "pyramids", "peers", "scaling", "warm_start", "hexagons" (Markdown), and the
+// Named tables: "machine", "pyramids", "peers", "threads", "scaling", "warm_start", "hexagons"
+// (Markdown), and the
 // CSV files "pyramids.csv", "scaling.csv", "warm_start.csv", "hexagons.csv".
 using Tables = std::map<std::string, std::string>;
 Tables make_tables(const Measurements& measurements);

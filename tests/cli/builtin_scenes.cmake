@@ -1,6 +1,7 @@
 # Every built-in scene (`lamina scenes`, and a member of each family: pyramid:4, …) runs STEPS steps; the scene written by
 # `lamina show NAME` runs to the same trace, byte for byte, as NAME itself; and a second run of
-# NAME writes the same bytes again (determinism). All failures are listed, by scene.
+# NAME, on two threads (--threads 2), writes the same bytes again (determinism). pyramid:20, big
+# enough for PGS to sweep on threads, runs on 1, 2 and 3. All failures are listed, by scene.
 #
 #   cmake -DLAMINA=<binary> -DOUT=<scratch folder> -DSTEPS=<n> -P builtin_scenes.cmake
 file(REMOVE_RECURSE "${OUT}")
@@ -47,7 +48,7 @@ endif()
 string(REGEX MATCHALL "(^|\n)[^ \n]+" names "${listing}")
 list(TRANSFORM names STRIP)
 list(FILTER names EXCLUDE REGEX ":[A-Z]$")
-list(APPEND names "pyramid:4" "vertical-stack:3" "heavy-on-light:1000" "ball-and-chain:1")
+list(APPEND names "pyramid:4" "vertical-stack:3" "heavy-on-light:1000" "ball-and-chain:1" "pyramid:20")
 list(LENGTH names count)
 if(count LESS 12)
   message(FATAL_ERROR "lamina scenes listed ${count} scenes:\n${listing}")
@@ -62,15 +63,21 @@ foreach(name IN LISTS names)
     continue()
   endif()
   lamina(built_in run "${name}" --steps ${STEPS} --trace "${OUT}/${stem}.jsonl")
-  lamina(again run "${name}" --steps ${STEPS} --trace "${OUT}/${stem}.again.jsonl")
+  lamina(again run "${name}" --steps ${STEPS} --threads 2 --trace "${OUT}/${stem}.again.jsonl")
   lamina(from_file run "${json}" --steps ${STEPS} --trace "${OUT}/${stem}.shown.jsonl")
   if(built_in AND again AND from_file)
-    compare("${name}: two runs" "${OUT}/${stem}.jsonl" "${OUT}/${stem}.again.jsonl")
+    compare("${name}: a run on one thread and one on two" "${OUT}/${stem}.jsonl" "${OUT}/${stem}.again.jsonl")
     compare("${name}: show, then run the file" "${OUT}/${stem}.jsonl" "${OUT}/${stem}.shown.jsonl")
+  endif()
+  if(name STREQUAL "pyramid:20")
+    lamina(three run "${name}" --steps ${STEPS} --threads 3 --trace "${OUT}/${stem}.three.jsonl")
+    if(built_in AND three)
+      compare("${name}: a run on one thread and one on three" "${OUT}/${stem}.jsonl" "${OUT}/${stem}.three.jsonl")
+    endif()
   endif()
 endforeach()
 
 if(failures)
   message(FATAL_ERROR "built-in scenes:${failures}")
 endif()
-message(STATUS "${count} built-in scenes: ran, show/run identical, runs identical")
+message(STATUS "${count} built-in scenes: ran, show/run identical, runs on 1, 2 (and 3) threads identical")

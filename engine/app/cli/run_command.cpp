@@ -28,6 +28,7 @@ WorldSettings run_settings(const RunOptions& o, Scene& scene) {
   for (const std::string& name : o.pitfalls) scene.step.pitfalls.add(pitfall_named(name));
   WorldSettings settings = checked_settings(scene, o.scene);
   settings.cache.enabled = !o.no_cache;
+  settings.threads = o.threads;
   return settings;
 }
 

@@ -32,9 +32,9 @@ long candidate_pairs(const Scene& scene) {
     pose.R << std::cos(body.angle), -std::sin(body.angle), std::sin(body.angle), std::cos(body.angle);
     boxes.push_back(bounding_box(placed.shape, pose));
   }
-  std::vector<int> order;
+  SweepMemory memory;
   std::vector<BodyPair> pairs;
-  sort_and_sweep(boxes, order, pairs);
+  sort_and_sweep(boxes, memory, pairs);
   long moving = 0;
   for (const BodyPair& pair : pairs) {
     if (!scene.bodies[pair.first].is_static || !scene.bodies[pair.second].is_static) ++moving;

@@ -1,0 +1,135 @@
+#include "parallel/workers.h"
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
+namespace lamina {
+
+Workers::Workers(int threads) {
+  if (threads < 1 || threads > 64) {
+    throw std::invalid_argument("threads must be 1 to 64, got " + std::to_string(threads));
+  }
+  failures_.resize(static_cast<std::size_t>(threads));
+  threads_.reserve(static_cast<std::size_t>(threads - 1));
+  for (int t = 1; t < threads; ++t) threads_.emplace_back([this, t] { serve(t); });
+}
+
+Workers::~Workers() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_.store(true);
+  }
+  wake_.notify_all();
+  for (std::thread& thread : threads_) thread.join();
+}
+
+namespace {
+
+// A step hands its threads one piece of work after another, often within microseconds: a thread
+// that has finished spins this long for the next before it sleeps (waking a sleeping thread
+// takes some tens of microseconds).
+constexpr auto spin_before_sleep = std::chrono::microseconds(100);
+
+void cpu_pause() {
+#if defined(__x86_64__) || defined(__i386__)
+  _mm_pause();  // let the other hyperthread of a core run while this one spins
+#endif
+}
+
+// Spins until done() or for spin_before_sleep; true if done().
+template <class Done>
+bool spin_until(Done&& done) {
+  const auto until = std::chrono::steady_clock::now() + spin_before_sleep;
+  for (int spins = 0; !done(); ++spins) {
+    cpu_pause();
+    if (spins % 64 == 63 && std::chrono::steady_clock::now() > until) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void Workers::run_erased(void* task, void (*call)(void*, int)) {
+  if (!threads_.empty()) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      task_ = task;
+      call_ = call;
+      pending_.store(static_cast<int>(threads_.size()));
+      generation_.fetch_add(1, std::memory_order_release);
+    }
+    wake_.notify_all();
+  }
+  try {
+    call(task, 0);
+  } catch (...) {
+    failures_[0] = std::current_exception();
+  }
+  if (!threads_.empty()) {
+    const auto finished = [this] { return pending_.load(std::memory_order_acquire) == 0; };
+    if (!spin_until(finished)) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      done_.wait(lock, finished);
+    }
+  }
+  for (std::exception_ptr& failure : failures_) {
+    if (failure) {
+      std::exception_ptr first = std::move(failure);
+      for (std::exception_ptr& other : failures_) other = nullptr;
+      std::rethrow_exception(first);
+    }
+  }
+}
+
+void Workers::serve(int t) {
+  long seen = 0;
+  for (;;) {
+    const auto woken = [&] {
+      return stopping_.load() || generation_.load(std::memory_order_acquire) != seen;
+    };
+    if (!spin_until(woken)) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, woken);
+    }
+    if (stopping_.load()) return;
+    seen = generation_.load(std::memory_order_acquire);
+    try {
+      call_(task_, t);
+    } catch (...) {
+      failures_[static_cast<std::size_t>(t)] = std::current_exception();
+    }
+    if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+      std::lock_guard<std::mutex> lock(mutex_);  // the caller is waiting, or about to check
+      done_.notify_one();
+    }
+  }
+}
+
+std::pair<std::size_t, std::size_t> share_of(std::size_t count, int part, int parts) {
+  const std::size_t n = static_cast<std::size_t>(parts);
+  const std::size_t k = static_cast<std::size_t>(part);
+  const std::size_t base = count / n;
+  const std::size_t longer = count % n;  // the first `longer` parts take one item more
+  const std::size_t first = k * base + (k < longer ? k : longer);
+  return {first, first + base + (k < longer ? 1 : 0)};
+}
+
+long Progress::wait_until(long at_least) const {
+  long value = value_.load(std::memory_order_acquire);
+  for (int spins = 0; value < at_least; ++spins) {
+    if (spins < 4096) {
+      cpu_pause();
+    } else {
+      std::this_thread::yield();  // the thread waited on may have lost its core (a busy machine)
+    }
+    value = value_.load(std::memory_order_acquire);
+  }
+  return value;
+}
+
+}  // namespace lamina

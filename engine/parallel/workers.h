@@ -1,0 +1,76 @@
+// A fixed team of threads for the parts of a step that split into independent pieces, and the
+// progress counter through which a pipeline's threads wait on each other (PGS's sweeps,
+// constraints/pgs_solver.h). The work is always split the same way, whatever the threads'
+// timing, and every value a piece computes is the one the single thread would compute: more
+// threads change how fast a step is taken, never one bit of it.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace lamina {
+
+class Workers {
+ public:
+  // A team of `threads` threads in all: the calling thread and threads − 1 started here, which
+  // wait until run() gives them work. Throws std::invalid_argument unless 1 ≤ threads ≤ 64.
+  explicit Workers(int threads);
+  ~Workers();
+  Workers(const Workers&) = delete;
+  Workers& operator=(const Workers&) = delete;
+
+  int count() const { return static_cast<int>(threads_.size()) + 1; }
+
+  // Calls task(t) once for each t in [0, count()): t = 0 on the calling thread, every other t on
+  // its own thread, all at once. Returns when every call has returned, and then rethrows the
+  // first exception one of them threw (by thread number), if any.
+  template <class Task>
+  void run(Task&& task) {
+    using Plain = std::remove_reference_t<Task>;
+    run_erased(const_cast<void*>(static_cast<const void*>(&task)),
+               [](void* f, int t) { (*static_cast<Plain*>(f))(t); });
+  }
+
+ private:
+  void run_erased(void* task, void (*call)(void*, int));
+  void serve(int t);  // a worker's loop: wait for a task, run its share, report done
+
+  std::vector<std::thread> threads_;
+  std::mutex mutex_;
+  std::condition_variable wake_;          // a new task, or the end
+  std::condition_variable done_;          // the last worker finished its share
+  std::atomic<long> generation_{0};       // counts run() calls; a worker runs each once
+  std::atomic<int> pending_{0};           // workers still running the current task
+  std::atomic<bool> stopping_{false};     // the destructor asks the workers to leave
+  void* task_ = nullptr;                  // the current task and how to call it
+  void (*call_)(void*, int) = nullptr;
+  std::vector<std::exception_ptr> failures_;  // per thread, what its share threw
+};
+
+// The contiguous share [first, last) of `count` items that part `part` of `parts` takes: equal
+// shares in order, the first count % parts of them one item longer. Depends on nothing else.
+std::pair<std::size_t, std::size_t> share_of(std::size_t count, int part, int parts);
+
+// How far one thread of a pipeline has got: a count that only grows, published by its thread
+// after the work it counts (release) and read by the threads waiting on it (acquire), on a cache
+// line of its own.
+class alignas(64) Progress {
+ public:
+  void reset() { value_.store(0, std::memory_order_relaxed); }
+  void publish(long value) { value_.store(value, std::memory_order_release); }
+  // Waits until the count is at least `at_least` (spinning, then yielding the core to other
+  // threads when the wait is long) and returns the count seen.
+  long wait_until(long at_least) const;
+
+ private:
+  std::atomic<long> value_{0};
+};
+
+}  // namespace lamina

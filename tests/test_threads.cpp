@@ -1,0 +1,209 @@
+// Threads (issue 19): the worker team and its shares, and a step taken on 2 and 3 threads giving
+// the one-thread numbers bit for bit — λ of PGS's sweeps, and every body's state.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstring>
+#include <random>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "constraints/pgs_solver.h"
+#include "parallel/workers.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_world.h"
+
+using namespace lamina;
+
+namespace {
+
+// The bytes of a vector of doubles: equal bytes, equal bits (−0 and +0, and NaNs, told apart).
+std::vector<unsigned char> bytes_of(const double* values, std::size_t count) {
+  std::vector<unsigned char> bytes(count * sizeof(double));
+  if (count > 0) std::memcpy(bytes.data(), values, bytes.size());
+  return bytes;
+}
+
+std::vector<unsigned char> state_bytes(const World& world) {
+  std::vector<double> values;
+  for (const RigidBody& b : world.bodies()) {
+    values.insert(values.end(), b.x.data(), b.x.data() + 3);
+    values.insert(values.end(), b.q.coeffs().data(), b.q.coeffs().data() + 4);
+    values.insert(values.end(), b.v.data(), b.v.data() + 3);
+    values.insert(values.end(), b.angular_velocity.data(), b.angular_velocity.data() + 3);
+  }
+  return bytes_of(values.data(), values.size());
+}
+
+World world_of(const std::string& scene_name, const std::string& solver, int threads) {
+  Scene scene = builtin_scene(scene_name);
+  scene.solver = solver;
+  WorldSettings settings = world_settings(scene);
+  settings.threads = threads;
+  return build_world(scene, settings);
+}
+
+// The velocity MLCP of pyramid:20 after `steps` steps and its warm start: 1700-odd rows.
+StepReport pyramid_mlcp(int steps, Scene scene = builtin_scene("pyramid:20")) {
+  scene.solver = "pgs";
+  World world = build_world(scene, world_settings(scene));
+  for (int k = 0; k < steps; ++k) world.step();
+  WorldReport report;
+  world.step(report);
+  return report.velocity;
+}
+
+// λ after `sweeps` sweeps from the report's warm start, by `solver`.
+std::vector<unsigned char> solved(PgsSolver& solver, const StepReport& step, int sweeps,
+                                  Pitfalls pitfalls = {}) {
+  std::vector<double> lambda(step.lambda_exp.data(), step.lambda_exp.data() + step.lambda_exp.size());
+  SweepResult result;
+  solver.solve(step.mlcp, lambda.data(), {sweeps, 0.0, false}, result, pitfalls);
+  return bytes_of(lambda.data(), lambda.size());
+}
+
+}  // namespace
+
+TEST_SUITE("Threads") {
+  TEST_CASE("shares are consecutive, cover every item once and differ by at most one") {
+    for (std::size_t count : {0u, 1u, 2u, 7u, 64u, 1001u}) {
+      for (int parts = 1; parts <= 9; ++parts) {
+        CAPTURE(count);
+        CAPTURE(parts);
+        std::size_t next = 0, smallest = count, largest = 0;
+        for (int part = 0; part < parts; ++part) {
+          const auto [first, last] = share_of(count, part, parts);
+          CHECK(first == next);  // consecutive, in order
+          CHECK(last >= first);
+          smallest = std::min(smallest, last - first);
+          largest = std::max(largest, last - first);
+          next = last;
+        }
+        CHECK(next == count);  // every item, once
+        CHECK(largest - smallest <= 1);
+      }
+    }
+  }
+
+  TEST_CASE("a team runs each share once, share 0 on the calling thread, all at once") {
+    Workers workers(3);
+    REQUIRE(workers.count() == 3);
+    for (int round = 0; round < 50; ++round) {  // the team is reused, as a World's steps reuse it
+      std::vector<std::thread::id> ran_on(3);
+      std::atomic<int> calls{0};
+      std::atomic<int> arrived{0};
+      workers.run([&](int t) {
+        ran_on[static_cast<std::size_t>(t)] = std::this_thread::get_id();
+        ++calls;
+        // every share waits for all three to have started: only shares run at once get past
+        ++arrived;
+        while (arrived.load() < 3) std::this_thread::yield();
+      });
+      CHECK(calls.load() == 3);
+      CHECK(ran_on[0] == std::this_thread::get_id());
+      CHECK(ran_on[1] != ran_on[0]);
+      CHECK(ran_on[2] != ran_on[0]);
+      CHECK(ran_on[2] != ran_on[1]);
+    }
+  }
+
+  TEST_CASE("an exception in a worker's share reaches the caller, and the team goes on") {
+    Workers workers(2);
+    CHECK_THROWS_AS(workers.run([](int t) {
+                      if (t == 1) throw std::runtime_error("share 1 failed");
+                    }),
+                    std::runtime_error);
+    int ran = 0;
+    workers.run([&](int t) {
+      if (t == 0) ++ran;
+    });
+    CHECK(ran == 1);
+    CHECK_THROWS_AS(Workers(0), std::invalid_argument);
+    CHECK_THROWS_AS(Workers(65), std::invalid_argument);
+  }
+
+  TEST_CASE("a waiting thread sees everything written before the count it waited for") {
+    // Progress publishes with release and waits with acquire: the reader must see each value
+    // the writer stored before publishing its count, never an older one.
+    Workers workers(2);
+    Progress progress;
+    std::vector<long> data(100000, -1);
+    long mismatches = 0;
+    workers.run([&](int t) {
+      if (t == 0) {
+        for (long i = 0; i < static_cast<long>(data.size()); ++i) {
+          data[static_cast<std::size_t>(i)] = i;
+          progress.publish(i + 1);
+        }
+      } else {
+        for (long i = 0; i < static_cast<long>(data.size()); ++i) {
+          progress.wait_until(i + 1);
+          if (data[static_cast<std::size_t>(i)] != i) ++mismatches;
+        }
+      }
+    });
+    CHECK(mismatches == 0);
+  }
+
+  TEST_CASE("PGS swept on 2 and 3 threads gives the one-thread λ bit for bit") {
+    // The threads' order keeps every body's sequence of updates (pgs_solver.h): λ must be
+    // identical, not close. Two moments of the pyramid: early (landing) and settled.
+    for (const int steps : {3, 60}) {
+      const StepReport step = pyramid_mlcp(steps);
+      REQUIRE(step.mlcp.row_count() >= 1000);
+      PgsSolver one;
+      const std::vector<unsigned char> expected = solved(one, step, 8);
+      CHECK_FALSE(one.swept_on_threads());
+      for (const int threads : {2, 3}) {
+        CAPTURE(steps);
+        CAPTURE(threads);
+        Workers workers(threads);
+        PgsSolver on_threads;
+        on_threads.use_workers(&workers);
+        CHECK(solved(on_threads, step, 8) == expected);
+        CHECK(on_threads.swept_on_threads());  // the threads did sweep: the check can fail
+        // the pitfall clamp-increment sweeps on threads too, and keeps its own numbers
+        PgsSolver one_clamped;
+        Pitfalls clamp;
+        clamp.add(Pitfall::clamp_increment);
+        CHECK(solved(on_threads, step, 8, clamp) == solved(one_clamped, step, 8, clamp));
+        CHECK(on_threads.swept_on_threads());
+      }
+    }
+  }
+
+  TEST_CASE("rows in no order of place are swept on one thread, to the same λ") {
+    // The pyramid's boxes listed in a shuffled order: a box's rows then share bodies with rows
+    // all over the order, the threads would wait at nearly every group, and the solver keeps to
+    // one thread.
+    Scene shuffled = builtin_scene("pyramid:20");
+    std::mt19937 rng(19);
+    std::shuffle(shuffled.bodies.begin() + 1, shuffled.bodies.end(), rng);  // the ground stays first
+    const StepReport step = pyramid_mlcp(30, shuffled);
+    REQUIRE(step.mlcp.row_count() >= 1000);
+    Workers workers(2);
+    PgsSolver on_threads;
+    on_threads.use_workers(&workers);
+    PgsSolver one;
+    CHECK(solved(on_threads, step, 8) == solved(one, step, 8));
+    CHECK_FALSE(on_threads.swept_on_threads());
+  }
+
+  TEST_CASE("a pyramid stepped on 2 and 3 threads keeps the one-thread state bit for bit") {
+    // 120 steps of pyramid:20 (landing, then resting under the cache's warm start): the narrow
+    // phase split between the threads, the velocity and position sweeps on them.
+    World one = world_of("pyramid:20", "pgs", 1);
+    World two = world_of("pyramid:20", "pgs", 2);
+    World three = world_of("pyramid:20", "pgs", 3);
+    for (int k = 0; k < 120; ++k) {
+      one.step();
+      two.step();
+      three.step();
+    }
+    const std::vector<unsigned char> expected = state_bytes(one);
+    CHECK(state_bytes(two) == expected);
+    CHECK(state_bytes(three) == expected);
+  }
+}
