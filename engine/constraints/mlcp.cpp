@@ -61,6 +61,19 @@ bool inertia_in_plane(const RigidBody& body) {
   return body.inverse_inertia_world(0, 2) == 0.0 && body.inverse_inertia_world(1, 2) == 0.0;
 }
 
+// Whether a friction row — row i on bodies `map`, bounded by rows friction_of ..
+// friction_of + count − 1 — has its contact rows before it on its own bodies, map_at(k) giving
+// row k's bodies; true for a row that is no friction row (friction_of < 0).
+template <class MapAt>
+bool on_own_bodies(const std::array<int, 2>& map, int friction_of, int count, std::size_t i,
+                   MapAt&& map_at) {
+  for (int k = 0; friction_of >= 0 && k < count; ++k) {
+    const int contact = friction_of + k;
+    if (static_cast<std::size_t>(contact) >= i || map_at(contact) != map) return false;
+  }
+  return true;
+}
+
 template <int N>
 const PackedRow<N>& row_at(const PackedRows<N>& rows, int i) {
   assert(i >= 0 && i < static_cast<int>(rows.size()));
@@ -108,75 +121,104 @@ double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodi
   return row_dot<6>(row.Jsp, v0, two ? velocity_of(bodies[row.Jmap[1]]) : v0, two);
 }
 
-template <int N>
-void Mlcp::note_row(const PackedRows<N>& rows, std::size_t i) {
-  const PackedRow<N>& row = rows[i];
-  if (i == 0) {
-    groups_.clear();
-    friction_on_own_bodies_ = true;
+template <class Pack>
+void Mlcp::pack_in_runs(std::size_t count, Workers* workers, Pack&& pack) {
+  const int runs = workers != nullptr ? workers->count() : 1;
+  groups_of_run_.resize(static_cast<std::size_t>(runs));
+  friction_own_in_run_.assign(static_cast<std::size_t>(runs), 1);
+  const auto pack_run = [&](int t) {
+    const auto [first, last] = share_of(count, t, runs);
+    std::vector<RowGroup>& groups = groups_of_run_[t];
+    groups.clear();
+    for (std::size_t i = first; i < last; ++i) {
+      if (!pack(i, groups)) friction_own_in_run_[t] = 0;
+    }
+  };
+  if (workers != nullptr) {
+    workers->run(pack_run);
+  } else {
+    pack_run(0);
   }
-  if (i == 0 || row.map != rows[i - 1].map) groups_.push_back({static_cast<int>(i), row.map});
-  for (int k = 0; row.friction_of >= 0 && k < row.friction_count; ++k) {
-    const std::size_t contact = static_cast<std::size_t>(row.friction_of + k);
-    if (contact >= i || rows[contact].map != row.map) friction_on_own_bodies_ = false;
+  groups_.clear();
+  friction_on_own_bodies_ = true;
+  for (int t = 0; t < runs; ++t) {
+    groups_.insert(groups_.end(), groups_of_run_[t].begin(), groups_of_run_[t].end());
+    friction_on_own_bodies_ = friction_on_own_bodies_ && friction_own_in_run_[t] != 0;
   }
-}
-
-void Mlcp::end_groups() {
-  const int count = row_count();
-  if (count == 0) {
-    groups_.clear();
-    friction_on_own_bodies_ = true;
-  }
-  groups_.push_back({count, {-1, -1}});
+  groups_.push_back({static_cast<int>(count), {-1, -1}});
 }
 
 void Mlcp::assemble(const std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
-                    const std::vector<Vec6>& unconstrained, double dt) {
+                    const std::vector<Vec6>& unconstrained, double dt, Workers* workers) {
+  // the layout: planar when every row and every body's I⁻¹ keep to the plane (each run of the
+  // workers checks its bodies, then its rows)
   inertia_in_plane_.resize(bodies.size());
-  for (size_t b = 0; b < bodies.size(); ++b) inertia_in_plane_[b] = inertia_in_plane(bodies[b]);
-  planar_ = std::all_of(rows.begin(), rows.end(), [&](const ConstraintRow& row) {
-    return in_plane(row.Jsp[0]) && in_plane(row.Jsp[1]) && inertia_in_plane_[row.Jmap[0]] &&
-           (row.is_one_body() || inertia_in_plane_[row.Jmap[1]]);
-  });
+  const int runs = workers != nullptr ? workers->count() : 1;
+  planar_in_run_.assign(static_cast<std::size_t>(runs), 1);
+  const auto check_bodies = [&](int t) {
+    const auto [first_body, last_body] = share_of(bodies.size(), t, runs);
+    for (size_t b = first_body; b < last_body; ++b) inertia_in_plane_[b] = inertia_in_plane(bodies[b]);
+  };
+  const auto check_rows = [&](int t) {
+    const auto [first, last] = share_of(rows.size(), t, runs);
+    planar_in_run_[t] = std::all_of(rows.begin() + first, rows.begin() + last, [&](const ConstraintRow& row) {
+      return in_plane(row.Jsp[0]) && in_plane(row.Jsp[1]) && inertia_in_plane_[row.Jmap[0]] &&
+             (row.is_one_body() || inertia_in_plane_[row.Jmap[1]]);
+    });
+  };
+  if (workers != nullptr) {
+    workers->run(check_bodies);
+    workers->run(check_rows);
+  } else {
+    check_bodies(0);
+    check_rows(0);
+  }
+  planar_ = std::all_of(planar_in_run_.begin(), planar_in_run_.end(), [](unsigned char p) { return p != 0; });
   body_count_ = static_cast<int>(bodies.size());
   visit_mutable([&](auto& packed) {
     packed.resize(rows.size());
-    for (size_t i = 0; i < rows.size(); ++i) {
+    pack_in_runs(rows.size(), workers, [&](std::size_t i, std::vector<RowGroup>& groups) {
       pack_row(bodies, rows[i], unconstrained, dt, packed[i]);
-      note_row(packed, i);
-    }
+      // the groups and the friction rows' bodies, from the rows as written (read-only: a row
+      // of another run may not be packed yet)
+      if (i == 0 || rows[i].Jmap != rows[i - 1].Jmap) groups.push_back({static_cast<int>(i), rows[i].Jmap});
+      return on_own_bodies(rows[i].Jmap, rows[i].friction_of, rows[i].friction_count, i,
+                           [&](int k) { return rows[k].Jmap; });
+    });
   });
-  end_groups();
 }
 
-void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows) {
+void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows, Workers* workers) {
   planar_ = from.planar_;
   body_count_ = from.body_count_;
   auto select = [&](const auto& source, auto& packed) {
     packed.resize(rows.size());
-    for (size_t i = 0; i < rows.size(); ++i) {
-      packed[i] = source[static_cast<std::size_t>(rows[i])];
-      if (packed[i].friction_of >= 0) {
+    pack_in_runs(rows.size(), workers, [&](std::size_t i, std::vector<RowGroup>& groups) {
+      const auto& row = source[static_cast<std::size_t>(rows[i])];
+      packed[i] = row;
+      if (i == 0 || row.map != source[static_cast<std::size_t>(rows[i - 1])].map) {
+        groups.push_back({static_cast<int>(i), row.map});
+      }
+      if (row.friction_of >= 0) {
         // the new index of its first contact row (rows ascend: a binary search)
-        const auto at = std::lower_bound(rows.begin(), rows.end(), packed[i].friction_of);
-        assert(at != rows.end() && *at == packed[i].friction_of);
+        const auto at = std::lower_bound(rows.begin(), rows.end(), row.friction_of);
+        assert(at != rows.end() && *at == row.friction_of);
         packed[i].friction_of = static_cast<int>(at - rows.begin());
       }
-      note_row(packed, i);
-    }
+      return on_own_bodies(row.map, row.friction_of, row.friction_count,
+                           static_cast<std::size_t>(rows[i]), [&](int k) { return source[k].map; });
+    });
   };
   if (planar_) {
     select(from.planar_rows_, planar_rows_);
   } else {
     select(from.general_rows_, general_rows_);
   }
-  end_groups();
 }
 
 void Mlcp::assemble_rows_of(const Mlcp& from, const std::vector<int>& rows,
-                            const std::vector<double>& zeta, double dt) {
-  assemble_subset(from, rows);
+                            const std::vector<double>& zeta, double dt, Workers* workers) {
+  assemble_subset(from, rows, workers);
   visit_mutable([&](auto& packed) {
     for (size_t i = 0; i < rows.size(); ++i) {
       packed[i].zeta = zeta[i];

@@ -19,6 +19,7 @@
 #include "constraints/constraint_row.h"
 #include "constraints/packed_rows.h"
 #include "motion/rigid_body.h"
+#include "parallel/workers.h"
 
 namespace lamina {
 
@@ -48,21 +49,22 @@ struct RowGroup {
 class Mlcp {
  public:
   // Assembles the MLCP of eq. 3-16 for the rows, `unconstrained` being each body's
-  // V/Δt + M⁻¹ F_ext (unconstrained_velocities; zeros: η = ζ/Δt). Its memory is reused.
+  // V/Δt + M⁻¹ F_ext (unconstrained_velocities; zeros: η = ζ/Δt). Its memory is reused. With
+  // `workers`, each of their threads packs a run of the rows (each row's numbers are its own).
   void assemble(const std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
-                const std::vector<Vec6>& unconstrained, double dt);
+                const std::vector<Vec6>& unconstrained, double dt, Workers* workers = nullptr);
   // Some rows of another MLCP on the same bodies, each asking a new ζ of bodies that start from
   // rest under no force: rows[i] of `from` becomes row i with ζ_i = zeta[i], η_i = ζ_i / Δt
   // (split impulse's position rows are the velocity MLCP's contact rows: J, B, d and the bounds
   // are the same).
   void assemble_rows_of(const Mlcp& from, const std::vector<int>& rows,
-                        const std::vector<double>& zeta, double dt);
+                        const std::vector<double>& zeta, double dt, Workers* workers = nullptr);
 
   // Rows of another MLCP as an MLCP of their own, η and all unchanged (an island of it, whose rows
   // touch no body that other rows touch, is solved apart: eq. 3-24 splits). `rows` ascend; the
   // bodies keep their indices; a friction row's contact rows must be among `rows`, consecutive as
   // they were, and are renumbered.
-  void assemble_subset(const Mlcp& from, const std::vector<int>& rows);
+  void assemble_subset(const Mlcp& from, const std::vector<int>& rows, Workers* workers = nullptr);
 
   int row_count() const;
   int body_count() const { return body_count_; }  // n, the bodies V spans
@@ -110,10 +112,11 @@ class Mlcp {
   decltype(auto) visit_mutable(F&& f) {
     return planar_ ? f(planar_rows_) : f(general_rows_);
   }
-  // Records row i, just packed, in groups_ and friction_on_own_bodies_ (rows in order from 0).
-  template <int N>
-  void note_row(const PackedRows<N>& rows, std::size_t i);
-  void end_groups();
+  // Packs rows 0 .. count − 1 by pack(i, groups), in runs on the workers' threads (or one run),
+  // each run noting the groups that start in it; pack returns whether a friction row i has its
+  // contact rows before it on its own bodies. Then joins the runs' groups in order.
+  template <class Pack>
+  void pack_in_runs(std::size_t count, Workers* workers, Pack&& pack);
 
   bool planar_ = true;           // the layout in use: planar_rows_ or general_rows_
   int body_count_ = 0;           // n
@@ -122,6 +125,9 @@ class Mlcp {
   std::vector<unsigned char> inertia_in_plane_;  // per body: I⁻¹ turns z into z (scratch)
   std::vector<RowGroup> groups_;           // runs of rows on the same bodies, and an end
   bool friction_on_own_bodies_ = true;
+  std::vector<std::vector<RowGroup>> groups_of_run_;  // scratch of pack_in_runs
+  std::vector<unsigned char> friction_own_in_run_;
+  std::vector<unsigned char> planar_in_run_;  // scratch of assemble
 };
 
 // The MLCP of the rows for the bodies' velocities and accumulated forces now (eq. 3-16).

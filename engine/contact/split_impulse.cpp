@@ -35,7 +35,7 @@ void solve_recording(PgsSolver& pgs, const Mlcp& mlcp, int iterations, std::vect
 
 void SplitImpulse::solve(const Mlcp& velocity, const std::vector<ContactPair>& pairs,
                          const ContactSettings& contact, const StepSettings& step, int iterations,
-                         PgsSolver& pgs, StepReport* report) {
+                         PgsSolver& pgs, StepReport* report, Workers* workers) {
   push_out_.clear();
   if (contact.correction != PositionCorrection::split_impulse) return;
   const double dt = step.dt;
@@ -43,7 +43,7 @@ void SplitImpulse::solve(const Mlcp& velocity, const std::vector<ContactPair>& p
   position_targets(pairs, contact, step, rows_, zeta_);
   if (report == nullptr && nothing_to_push(zeta_)) return;  // a report shows the sweeps
   // eq. 3-16 for the push-out alone: the bodies start from rest under no force, so η = ζ/Δt
-  position_.assemble_rows_of(velocity, rows_, zeta_, dt);
+  position_.assemble_rows_of(velocity, rows_, zeta_, dt, workers);
   lambda_.assign(rows_.size(), 0.0);
   solve_recording(pgs, position_, iterations, lambda_, report, step.pitfalls);
   // The push-out velocity of each body: M⁻¹ Jᵀ λ Δt = B λ Δt
@@ -69,9 +69,18 @@ void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt, Pitfa
 }
 
 void integrate_with_push_out(std::vector<RigidBody>& bodies, const std::vector<Vec6>& push_out,
-                             double dt, Pitfalls pitfalls) {
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    integrate_with_push_out(bodies[i], push_out.empty() ? Vec6::Zero() : push_out[i], dt, pitfalls);
+                             double dt, Pitfalls pitfalls, Workers* workers) {
+  const int runs = workers != nullptr ? workers->count() : 1;
+  const auto step_run = [&](int t) {
+    const auto [first, last] = share_of(bodies.size(), t, runs);
+    for (std::size_t i = first; i < last; ++i) {
+      integrate_with_push_out(bodies[i], push_out.empty() ? Vec6::Zero() : push_out[i], dt, pitfalls);
+    }
+  };
+  if (workers != nullptr) {
+    workers->run(step_run);
+  } else {
+    step_run(0);
   }
 }
 

@@ -26,10 +26,11 @@ class SplitImpulse {
   // Solves the position MLCP of the pairs' contact rows of `velocity` with `iterations` PGS
   // sweeps, recording into `report` when one is given. Nothing is solved, and push_out() is
   // empty, when the correction is not split impulse or (without a report) no point is deeper
-  // than the slop and no gap is to close.
+  // than the slop and no gap is to close. With `workers` the position MLCP is packed on their
+  // threads (the sweeps run where `pgs` runs them: PgsSolver::use_workers).
   void solve(const Mlcp& velocity, const std::vector<ContactPair>& pairs,
              const ContactSettings& contact, const StepSettings& step, int iterations,
-             PgsSolver& pgs, StepReport* report);
+             PgsSolver& pgs, StepReport* report, Workers* workers = nullptr);
   // Each body's push-out [v; ω] in m/s and rad/s, or empty for none.
   const std::vector<Vec6>& push_out() const { return push_out_; }
 
@@ -43,9 +44,10 @@ class SplitImpulse {
 
 // Chapter 2's step (eq. 2-1..2-8) for every dynamic body under its accumulated forces, with the
 // push-out velocity (empty: none) lent for the position update and then taken back; every
-// body's forces are cleared. The pitfalls go to chapter 2's step.
+// body's forces are cleared. The pitfalls go to chapter 2's step. With `workers`, each thread
+// steps a run of the bodies (each body's step is its own).
 void integrate_with_push_out(std::vector<RigidBody>& bodies, const std::vector<Vec6>& push_out,
-                             double dt, Pitfalls pitfalls = {});
+                             double dt, Pitfalls pitfalls = {}, Workers* workers = nullptr);
 // The same for one body with its push-out `push` ([v; ω], zero for none).
 void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt, Pitfalls pitfalls = {});
 

@@ -115,6 +115,7 @@ void World::step() { advance(nullptr); }
 void World::step(WorldReport& report) { advance(&report); }
 
 void World::advance(WorldReport* report) {
+  const Workers::Awake awake(workers_.get());  // the threads wait spinning between the phases
   if (report != nullptr) {
     *report = WorldReport();  // a reused report keeps nothing of its last step
     report->time = time_;
@@ -132,7 +133,7 @@ void World::advance(WorldReport* report) {
     velocity_.add_constraint_forces(bodies_, lambda_.data());
     // 7. eq. 2-1..2-8 under F_ext + F_c, with split impulse's push-out
     integrate_with_push_out(bodies_, split_impulse_.push_out(), settings_.step.dt,
-                            settings_.step.pitfalls);
+                            settings_.step.pitfalls, workers_.get());
   }
   time_ += settings_.step.dt;
   steps_taken_in_process.fetch_add(1, std::memory_order_relaxed);
@@ -209,14 +210,14 @@ void World::solve(WorldReport* report) {
   const double dt = settings_.step.dt;
   // eq. 3-16: J B λ = η with B = M⁻¹ Jᵀ, η = ζ/Δt − J (V/Δt + M⁻¹ F_ext)
   unconstrained_velocities(bodies_, dt, unconstrained_);
-  velocity_.assemble(bodies_, rows_, unconstrained_, dt);
+  velocity_.assemble(bodies_, rows_, unconstrained_, dt, workers_.get());
   // eq. 3-24 by Projected Gauss-Seidel, friction bounds ±μ λc read as λc changes
   solve_recording(pgs_, velocity_, settings_.step.iterations, lambda_,
                   report != nullptr ? &report->velocity : nullptr, settings_.step.pitfalls);
   remember_lambdas(report);
   split_impulse_.solve(velocity_, cache_.pairs(), settings_.contact, settings_.step,
                        settings_.position_iterations, pgs_,
-                       report != nullptr ? &report->position : nullptr);
+                       report != nullptr ? &report->position : nullptr, workers_.get());
 }
 
 void World::take_method_step(WorldReport* report) {

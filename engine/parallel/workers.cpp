@@ -41,18 +41,37 @@ void cpu_pause() {
 #endif
 }
 
-// Spins until done() or for spin_before_sleep; true if done().
-template <class Done>
-bool spin_until(Done&& done) {
-  const auto until = std::chrono::steady_clock::now() + spin_before_sleep;
+// Spins until done(), or for spin_before_sleep once keep_spinning() is false; true if done().
+template <class Done, class KeepSpinning>
+bool spin_until(Done&& done, KeepSpinning&& keep_spinning) {
+  auto until = std::chrono::steady_clock::now() + spin_before_sleep;
   for (int spins = 0; !done(); ++spins) {
     cpu_pause();
-    if (spins % 64 == 63 && std::chrono::steady_clock::now() > until) return false;
+    if (spins % 64 != 63) continue;
+    const auto now = std::chrono::steady_clock::now();
+    if (keep_spinning()) {
+      until = now + spin_before_sleep;
+    } else if (now > until) {
+      return false;
+    }
   }
   return true;
 }
 
 }  // namespace
+
+Workers::Awake::Awake(Workers* workers) : workers_(workers) {
+  if (workers_ == nullptr) return;
+  workers_->awake_.fetch_add(1);
+  {
+    std::lock_guard<std::mutex> lock(workers_->mutex_);  // a sleeping thread checks under it
+  }
+  workers_->wake_.notify_all();  // sleeping threads start spinning
+}
+
+Workers::Awake::~Awake() {
+  if (workers_ != nullptr) workers_->awake_.fetch_sub(1);
+}
 
 void Workers::run_erased(void* task, void (*call)(void*, int)) {
   if (!threads_.empty()) {
@@ -72,7 +91,7 @@ void Workers::run_erased(void* task, void (*call)(void*, int)) {
   }
   if (!threads_.empty()) {
     const auto finished = [this] { return pending_.load(std::memory_order_acquire) == 0; };
-    if (!spin_until(finished)) {
+    if (!spin_until(finished, [] { return true; })) {
       std::unique_lock<std::mutex> lock(mutex_);
       done_.wait(lock, finished);
     }
@@ -92,9 +111,11 @@ void Workers::serve(int t) {
     const auto woken = [&] {
       return stopping_.load() || generation_.load(std::memory_order_acquire) != seen;
     };
-    if (!spin_until(woken)) {
+    const auto kept_awake = [this] { return awake_.load(std::memory_order_relaxed) > 0; };
+    while (!spin_until(woken, kept_awake)) {
       std::unique_lock<std::mutex> lock(mutex_);
-      wake_.wait(lock, woken);
+      wake_.wait(lock, [&] { return woken() || kept_awake(); });
+      if (woken()) break;
     }
     if (stopping_.load()) return;
     seen = generation_.load(std::memory_order_acquire);
