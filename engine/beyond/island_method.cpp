@@ -23,6 +23,7 @@ class IslandMethod final : public StepMethod {
   void take_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
                  std::vector<double>& lambda, WorldReport* report) override {
     skip_.assign(bodies.size(), 0);
+    pgs_.use_workers(problem.workers);  // a large island's sweeps, and the push-out's, on them
     islands_.find(problem.velocity, problem.first_joint_row);
     if (work_.size() < islands_.size()) work_.resize(islands_.size());
     for (std::size_t k = 0; k < islands_.size(); ++k) {

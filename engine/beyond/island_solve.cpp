@@ -43,7 +43,7 @@ void finish_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
                  SplitImpulse& split, PgsSolver& pgs, WorldReport* report) {
   const WorldSettings& s = problem.settings;
   split.solve(problem.velocity, problem.pairs, s.contact, s.step, s.position_iterations, pgs,
-              report != nullptr ? &report->position : nullptr);
+              report != nullptr ? &report->position : nullptr, problem.workers);
   // eq. 3-11, 5-9: F_c = Jᵀ λ (nothing on a skipped body: its rows' λ are zero here)
   problem.velocity.add_constraint_forces(bodies, lambda.data());
   const std::vector<Vec6>& push = split.push_out();

@@ -60,7 +60,9 @@ template <>
 std::vector<Block<6>>& PgsSolver::a<6>() { return general_a_; }
 
 void PgsSolver::use_workers(Workers* workers) {
-  workers_ = workers != nullptr && workers->count() > 1 ? workers : nullptr;
+  if (workers == nullptr || workers->count() < 2) workers = nullptr;
+  if (workers == workers_) return;
+  workers_ = workers;
   progress_.reset(workers_ != nullptr ? new Progress[workers_->count()] : nullptr);
 }
 

@@ -27,6 +27,8 @@ struct StepProblem {
   const std::vector<const Constraint*>& joints;  // the joints, in the order added
   const std::vector<RowRange>& joint_rows;  // and where each one's rows sit
   const Mlcp& velocity;                     // the rows' MLCP, assembled (eq. 3-16)
+  Workers* workers = nullptr;               // the World's threads past the first, or none:
+                                            // for PGS's sweeps (PgsSolver::use_workers)
 };
 
 class StepMethod {

@@ -223,7 +223,7 @@ void World::solve(WorldReport* report) {
 void World::take_method_step(WorldReport* report) {
   const double dt = settings_.step.dt;
   unconstrained_velocities(bodies_, dt, unconstrained_);
-  velocity_.assemble(bodies_, rows_, unconstrained_, dt);
+  velocity_.assemble(bodies_, rows_, unconstrained_, dt, workers_.get());
   joint_rows_.clear();
   for (const Joint& joint : joints_) joint_rows_.push_back(joint.rows);
   if (report != nullptr) {
@@ -232,7 +232,7 @@ void World::take_method_step(WorldReport* report) {
         lambda_.data(), static_cast<Eigen::Index>(lambda_.size()));
   }
   const StepProblem problem{settings_,    rows_,       first_joint_row_, cache_.pairs(),
-                            joint_views_, joint_rows_, velocity_};
+                            joint_views_, joint_rows_, velocity_, workers_.get()};
   method_->take_step(problem, bodies_, lambda_, report);
   if (report != nullptr) {
     report->velocity.solution.lambda = Eigen::Map<const Eigen::VectorXd>(
