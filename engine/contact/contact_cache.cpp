@@ -130,8 +130,8 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::v
 
 void ContactCache::write_rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,
                               const StepSettings& step, std::vector<ConstraintRow>& rows,
-                              std::vector<double>& lambda) {
-  add_contact_rows(pairs_, bodies, settings, step, rows, lambda);
+                              std::vector<double>& lambda, Workers* workers) {
+  add_contact_rows(pairs_, bodies, settings, step, rows, lambda, workers);
 }
 
 void ContactCache::store_lambdas(const double* lambda) { store_contact_lambdas(pairs_, lambda); }

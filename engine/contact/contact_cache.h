@@ -58,10 +58,10 @@ class ContactCache {
               const CacheSettings& settings);
 
   // Appends the rows of its pairs and their warm-start λ, recording where each pair's and each
-  // contact's rows went (contact_rows.h, add_contact_rows).
+  // contact's rows went (contact_rows.h, add_contact_rows), on `workers`' threads if given.
   void write_rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,
                   const StepSettings& step, std::vector<ConstraintRow>& rows,
-                  std::vector<double>& lambda);
+                  std::vector<double>& lambda, Workers* workers = nullptr);
   // Keeps each contact's solved λ, read from its rows, as its warm start for the next step.
   void store_lambdas(const double* lambda);
 

@@ -1,6 +1,7 @@
 #include "contact/contact_rows.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <string>
 
@@ -11,14 +12,21 @@
 namespace lamina {
 namespace {
 
-// A row as ConstraintRow's defaults make it: new rows are copied from it, which costs less than
-// value-initialising each one in place.
-const ConstraintRow blank_row;
+// Where a run of pairs writes its rows and their warm-start λ: from `next` on, into vectors
+// already sized for every run's rows, their rows as ConstraintRow's defaults make them.
+struct RowSlots {
+  std::vector<ConstraintRow>& rows;
+  std::vector<double>& lambda;
+  int next = 0;
+};
 
-// Appends the point row of direction u at the ends' contact point; returns its index.
-int append_row(std::vector<ConstraintRow>& rows, const RowEnds& ends, const Vec3& u) {
-  write_point_row(ends, u, rows.emplace_back(blank_row));
-  return static_cast<int>(rows.size()) - 1;
+// Writes the point row of direction u at the ends' contact point, with its λ_exp, in the next
+// slot; returns its index.
+int append_row(RowSlots& slots, const RowEnds& ends, const Vec3& u, double lambda_exp) {
+  const int index = slots.next++;
+  write_point_row(ends, u, slots.rows[static_cast<std::size_t>(index)]);
+  slots.lambda[static_cast<std::size_t>(index)] = lambda_exp;
+  return index;
 }
 
 // The velocity a cached point with a gap may approach at: 0 for the text (eq. 4-4's
@@ -60,26 +68,35 @@ int friction_rows_per_contact(const ContactPair& pair, const ContactSettings& se
   return settings.out_of_plane_friction ? 2 : 1;
 }
 
+// The rows a pair writes: a contact row per point and its friction rows, one per tangent for
+// the pair's manifold of two points (FrictionRows::per_manifold) or per point.
+int rows_of_pair(const ContactPair& pair, const ContactSettings& settings) {
+  const bool one_row = settings.friction == FrictionRows::per_manifold && pair.count == 2;
+  return pair.count + friction_rows_per_contact(pair, settings) * (one_row ? 1 : pair.count);
+}
+
 // Appends a friction row along u at the ends' point, bounded by ±μ times the λ of `count`
 // contact rows from `contact_row` (eq. 3-26, λc read from them during the iterations).
-int append_friction_row(std::vector<ConstraintRow>& rows, const ContactPair& pair,
-                        const RowEnds& ends, const Vec3& u, int contact_row, int count) {
-  const int index = append_row(rows, ends, u);
-  rows.back().friction_of = contact_row;
-  rows.back().friction_count = count;
-  rows.back().mu = pair.friction;
+int append_friction_row(RowSlots& slots, const ContactPair& pair, const RowEnds& ends,
+                        const Vec3& u, int contact_row, int count, double lambda_exp) {
+  const int index = append_row(slots, ends, u, lambda_exp);
+  ConstraintRow& row = slots.rows[static_cast<std::size_t>(index)];
+  row.friction_of = contact_row;
+  row.friction_count = count;
+  row.mu = pair.friction;
   return index;
 }
 
-// The pitfall crude-friction: the pair's friction rows from `first` on bounded by ±μ m g per
+// The pitfall crude-friction: the pair's friction rows [first, last) bounded by ±μ m g per
 // point they hold, m the mass of the moving body the contact holds up (the second, or the first
 // when the second is static), whatever the normal force λc is: the text's cruder bound.
-void crude_friction_bounds(std::vector<ConstraintRow>& rows, int first, const ContactPair& pair,
-                           const std::vector<RigidBody>& bodies, const StepSettings& step) {
+void crude_friction_bounds(std::vector<ConstraintRow>& rows, int first, int last,
+                           const ContactPair& pair, const std::vector<RigidBody>& bodies,
+                           const StepSettings& step) {
   const RigidBody& second = bodies[static_cast<std::size_t>(pair.bodies.second)];
   const RigidBody& held = second.is_static() ? bodies[static_cast<std::size_t>(pair.bodies.first)] : second;
   const double per_point = pair.friction * held.mass * step.gravity.norm();
-  for (std::size_t i = static_cast<std::size_t>(first); i < rows.size(); ++i) {
+  for (std::size_t i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(last); ++i) {
     ConstraintRow& row = rows[i];
     const double bound = per_point * row.friction_count;
     row.friction_of = -1;
@@ -102,50 +119,84 @@ void validate(const ContactSettings& s) {
               std::to_string(s.restitution_threshold));
 }
 
-void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
-                      const ContactSettings& settings, const StepSettings& step,
-                      std::vector<ConstraintRow>& rows, std::vector<double>& lambda) {
-  for (ContactPair& pair : pairs) {
-    pair.rows.first = static_cast<int>(rows.size());
-    std::array<RowEnds, 2> ends;
+namespace {
+
+// Writes one pair's rows into the next slots and records where they went.
+void write_pair_rows(ContactPair& pair, const std::vector<RigidBody>& bodies,
+                     const ContactSettings& settings, const StepSettings& step, RowSlots& slots) {
+  pair.rows.first = slots.next;
+  std::array<RowEnds, 2> ends;
+  for (int k = 0; k < pair.count; ++k) {
+    Contact& contact = pair.contacts[k];
+    // r1 = c − x1, r2 = c − x2
+    ends[k] = ends_at_point(bodies, pair.bodies.first, pair.bodies.second, lift(contact.point));
+    contact.row = append_row(slots, ends[k], lift(contact.normal), contact.lambda_normal);
+    write_contact_row(slots.rows[static_cast<std::size_t>(contact.row)], pair, contact, bodies,
+                      settings, step);
+  }
+  for (int k = 0; k < pair.count; ++k) pair.contacts[k].friction_rows = {-1, -1};
+  const int tangents = friction_rows_per_contact(pair, settings);
+  const int first_friction_row = slots.next;
+  const bool one_row = settings.friction == FrictionRows::per_manifold && pair.count == 2;
+  for (int t = 0; t < tangents; ++t) {
+    if (one_row) {
+      Contact& a = pair.contacts[0];
+      Contact& b = pair.contacts[1];
+      // the manifold's middle and normal; its contact rows are a.row and a.row + 1
+      const Vec2 middle = 0.5 * (a.point + b.point);
+      const Vec2 sum = a.normal + b.normal;  // opposite normals cannot share a tangent
+      const Vec2 normal = sum.norm() > 1e-9 ? Vec2(sum.normalized()) : a.normal;
+      const RowEnds at_middle =
+          ends_at_point(bodies, pair.bodies.first, pair.bodies.second, lift(middle));
+      a.friction_rows[t] = b.friction_rows[t] =
+          append_friction_row(slots, pair, at_middle, tangent(t, normal), a.row, 2,
+                              t == 0 ? a.lambda_tangent + b.lambda_tangent : 0.0);
+      continue;
+    }
     for (int k = 0; k < pair.count; ++k) {
       Contact& contact = pair.contacts[k];
-      // r1 = c − x1, r2 = c − x2
-      ends[k] = ends_at_point(bodies, pair.bodies.first, pair.bodies.second, lift(contact.point));
-      contact.row = append_row(rows, ends[k], lift(contact.normal));
-      write_contact_row(rows.back(), pair, contact, bodies, settings, step);
-      lambda.push_back(contact.lambda_normal);
+      contact.friction_rows[t] =
+          append_friction_row(slots, pair, ends[k], tangent(t, contact.normal), contact.row, 1,
+                              t == 0 ? contact.lambda_tangent : 0.0);
     }
-    for (int k = 0; k < pair.count; ++k) pair.contacts[k].friction_rows = {-1, -1};
-    const int tangents = friction_rows_per_contact(pair, settings);
-    const int first_friction_row = static_cast<int>(rows.size());
-    const bool one_row = settings.friction == FrictionRows::per_manifold && pair.count == 2;
-    for (int t = 0; t < tangents; ++t) {
-      if (one_row) {
-        Contact& a = pair.contacts[0];
-        Contact& b = pair.contacts[1];
-        // the manifold's middle and normal; its contact rows are a.row and a.row + 1
-        const Vec2 middle = 0.5 * (a.point + b.point);
-        const Vec2 sum = a.normal + b.normal;  // opposite normals cannot share a tangent
-        const Vec2 normal = sum.norm() > 1e-9 ? Vec2(sum.normalized()) : a.normal;
-        const RowEnds at_middle =
-            ends_at_point(bodies, pair.bodies.first, pair.bodies.second, lift(middle));
-        a.friction_rows[t] = b.friction_rows[t] =
-            append_friction_row(rows, pair, at_middle, tangent(t, normal), a.row, 2);
-        lambda.push_back(t == 0 ? a.lambda_tangent + b.lambda_tangent : 0.0);
-        continue;
-      }
-      for (int k = 0; k < pair.count; ++k) {
-        Contact& contact = pair.contacts[k];
-        contact.friction_rows[t] =
-            append_friction_row(rows, pair, ends[k], tangent(t, contact.normal), contact.row, 1);
-        lambda.push_back(t == 0 ? contact.lambda_tangent : 0.0);
-      }
-    }
-    if (step.pitfalls.has(Pitfall::crude_friction)) {
-      crude_friction_bounds(rows, first_friction_row, pair, bodies, step);
-    }
-    pair.rows.count = static_cast<int>(rows.size()) - pair.rows.first;
+  }
+  if (step.pitfalls.has(Pitfall::crude_friction)) {
+    crude_friction_bounds(slots.rows, first_friction_row, slots.next, pair, bodies, step);
+  }
+  pair.rows.count = slots.next - pair.rows.first;
+}
+
+}  // namespace
+
+void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
+                      const ContactSettings& settings, const StepSettings& step,
+                      std::vector<ConstraintRow>& rows, std::vector<double>& lambda,
+                      Workers* workers) {
+  // Each run of the workers writes a run of the pairs. Its rows' place is counted first, so
+  // that the runs write side by side into rows sized for all of them at once (new rows, as
+  // ConstraintRow's defaults make them).
+  assert(lambda.size() == rows.size());
+  const int runs = workers != nullptr ? workers->count() : 1;
+  std::array<int, 65> first_row{};  // per run (at most 64), and the end
+  first_row[0] = static_cast<int>(rows.size());
+  for (int t = 0; t < runs; ++t) {
+    const auto [first, last] = share_of(pairs.size(), t, runs);
+    int count = 0;
+    for (std::size_t p = first; p < last; ++p) count += rows_of_pair(pairs[p], settings);
+    first_row[t + 1] = first_row[t] + count;
+  }
+  rows.resize(static_cast<std::size_t>(first_row[runs]));
+  lambda.resize(static_cast<std::size_t>(first_row[runs]));
+  const auto write_run = [&](int t) {
+    RowSlots slots{rows, lambda, first_row[t]};
+    const auto [first, last] = share_of(pairs.size(), t, runs);
+    for (std::size_t p = first; p < last; ++p) write_pair_rows(pairs[p], bodies, settings, step, slots);
+    assert(slots.next == first_row[t + 1]);  // rows_of_pair counted what write_pair_rows wrote
+  };
+  if (workers != nullptr) {
+    workers->run(write_run);
+  } else {
+    write_run(0);
   }
 }
 

@@ -30,6 +30,7 @@
 #include "constraints/step_settings.h"
 #include "contact/contact.h"
 #include "motion/rigid_body.h"
+#include "parallel/workers.h"
 
 namespace lamina {
 
@@ -62,10 +63,13 @@ void validate(const ContactSettings& settings);
 // `lambda`: the pair's contact rows, then its friction rows (below their contact rows, as the
 // text orders them, so a friction bound reads the λc updated in the same sweep). Records where
 // they went: each pair's `rows`, each contact's `row` and `friction_rows` (both contacts of a
-// manifold name its one friction row). Uses β and Δt.
+// manifold name its one friction row). Uses β and Δt. `lambda` holds one value per row of
+// `rows` on entry. With `workers`, each of their threads writes the rows of a run of the pairs
+// (each pair's rows are its own), in the same places.
 void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
                       const ContactSettings& settings, const StepSettings& step,
-                      std::vector<ConstraintRow>& rows, std::vector<double>& lambda);
+                      std::vector<ConstraintRow>& rows, std::vector<double>& lambda,
+                      Workers* workers = nullptr);
 
 // Stores the solved λ of each contact's rows into the cache (the next step's warm start); a
 // manifold's one friction λ is shared by its points in proportion to their λc, so that each

@@ -192,7 +192,7 @@ void World::build_rows() {
   rows_.clear();
   lambda_.clear();
   // the contacts' rows, λ_exp = the cached λ (zero with the cache off)
-  cache_.write_rows(bodies_, settings_.contact, settings_.step, rows_, lambda_);
+  cache_.write_rows(bodies_, settings_.contact, settings_.step, rows_, lambda_, workers_.get());
   first_joint_row_ = rows_.size();
   for (Joint& joint : joints_) {
     joint.rows.first = static_cast<int>(rows_.size());
