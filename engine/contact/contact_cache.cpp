@@ -1,5 +1,6 @@
 #include "contact/contact_cache.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -102,17 +103,49 @@ CachedPoints ContactCache::cached_points(const BodyPair& bodies, const std::vect
 
 void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::vector<Pose2>& poses,
                           const std::vector<Shape>& shapes, const std::vector<Material>& materials,
-                          const CacheSettings& settings) {
+                          const CacheSettings& settings, Workers* workers) {
   if (!settings.enabled) pairs_.clear();
-  next_.clear();
+  // Each run of the workers takes a run of the cached pairs and the fresh collisions of the
+  // same bodies (both sorted by pair), and keeps its pairs in order; the runs are joined in order.
+  const int runs = workers != nullptr && !pairs_.empty() ? workers->count() : 1;
+  next_of_run_.resize(static_cast<std::size_t>(runs));
+  const auto update_run = [&](int t) {
+    const auto [first, last] = share_of(pairs_.size(), t, runs);
+    // the fresh collisions from this run's first pair (the first run: from the start) to the
+    // next run's first pair (the last run: to the end)
+    const auto fresh_from = [&](std::size_t cached_index, bool to_end) {
+      if (to_end || cached_index >= pairs_.size()) return fresh.end();
+      return std::lower_bound(fresh.begin(), fresh.end(), pairs_[cached_index].bodies,
+                              [](const FreshCollision& f, const BodyPair& b) { return f.bodies < b; });
+    };
+    std::vector<ContactPair>& next = t == 0 ? next_ : next_of_run_[t];
+    next.clear();
+    merge_run(pairs_.begin() + first, pairs_.begin() + last,
+              t == 0 ? fresh.begin() : fresh_from(first, false),
+              fresh_from(last, t == runs - 1), poses, shapes, materials, settings, next);
+  };
+  if (runs > 1) {
+    workers->run(update_run);
+  } else {
+    update_run(0);
+  }
+  for (int t = 1; t < runs; ++t) next_.insert(next_.end(), next_of_run_[t].begin(), next_of_run_[t].end());
+  pairs_.swap(next_);
+}
+
+void ContactCache::merge_run(std::vector<ContactPair>::const_iterator cached,
+                             std::vector<ContactPair>::const_iterator cached_end,
+                             std::vector<FreshCollision>::const_iterator found,
+                             std::vector<FreshCollision>::const_iterator found_end,
+                             const std::vector<Pose2>& poses, const std::vector<Shape>& shapes,
+                             const std::vector<Material>& materials, const CacheSettings& settings,
+                             std::vector<ContactPair>& next) const {
   // Walk the cached pairs and the fresh collisions together, both sorted by pair.
-  auto cached = pairs_.begin();
-  auto found = fresh.begin();
-  while (cached != pairs_.end() || found != fresh.end()) {
+  while (cached != cached_end || found != found_end) {
     const bool take_cached =
-        cached != pairs_.end() && (found == fresh.end() || !(found->bodies < cached->bodies));
+        cached != cached_end && (found == found_end || !(found->bodies < cached->bodies));
     const bool take_fresh =
-        found != fresh.end() && (cached == pairs_.end() || !(cached->bodies < found->bodies));
+        found != found_end && (cached == cached_end || !(cached->bodies < found->bodies));
     ContactPair pair = take_cached ? *cached : new_pair(found->bodies, shapes, materials);
     if (take_cached) {
       refresh(pair, poses, shapes, settings);
@@ -123,9 +156,8 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::v
             settings);
       ++found;
     }
-    if (pair.count > 0) next_.push_back(pair);
+    if (pair.count > 0) next.push_back(pair);
   }
-  pairs_.swap(next_);
 }
 
 void ContactCache::write_rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,

@@ -53,9 +53,11 @@ class ContactCache {
                              size_t& cursor) const;
 
   // Steps 1 and 2 above. `fresh` must be sorted by pair; materials give a new pair's μ and e.
+  // With `workers`, each of their threads updates a run of the pairs (each pair's update is its
+  // own) and the runs are joined in order.
   void update(const std::vector<FreshCollision>& fresh, const std::vector<Pose2>& poses,
               const std::vector<Shape>& shapes, const std::vector<Material>& materials,
-              const CacheSettings& settings);
+              const CacheSettings& settings, Workers* workers = nullptr);
 
   // Appends the rows of its pairs and their warm-start λ, recording where each pair's and each
   // contact's rows went (contact_rows.h, add_contact_rows), on `workers`' threads if given.
@@ -66,8 +68,19 @@ class ContactCache {
   void store_lambdas(const double* lambda);
 
  private:
+  // Steps 1 and 2 for the cached pairs [cached, cached_end) and the fresh collisions [found,
+  // found_end) of the same bodies: the kept pairs appended to `next`, in order.
+  void merge_run(std::vector<ContactPair>::const_iterator cached,
+                 std::vector<ContactPair>::const_iterator cached_end,
+                 std::vector<FreshCollision>::const_iterator found,
+                 std::vector<FreshCollision>::const_iterator found_end,
+                 const std::vector<Pose2>& poses, const std::vector<Shape>& shapes,
+                 const std::vector<Material>& materials, const CacheSettings& settings,
+                 std::vector<ContactPair>& next) const;
+
   std::vector<ContactPair> pairs_;  // this step's pairs, sorted
   std::vector<ContactPair> next_;   // scratch for the update, kept to avoid allocation
+  std::vector<std::vector<ContactPair>> next_of_run_;  // on threads: runs 1.., theirs
 };
 
 }  // namespace lamina

@@ -186,7 +186,9 @@ void World::find_collisions(std::size_t first, std::size_t last,
   }
 }
 
-void World::update_cache() { cache_.update(fresh_, poses_, shapes_, materials_, settings_.cache); }
+void World::update_cache() {
+  cache_.update(fresh_, poses_, shapes_, materials_, settings_.cache, workers_.get());
+}
 
 void World::build_rows() {
   rows_.clear();
