@@ -119,11 +119,16 @@ bool PgsSolver::plan_threads(const Mlcp& mlcp) {
 }
 
 // One Gauss-Seidel sweep over the rows, each λ_i projected onto its bounds, group by group.
+// Flattened: the groups' passes inlined into the loop (called, they cost 6 % more
+// instructions on a pyramid).
 template <int N, bool ClampIncrement>
-void PgsSolver::sweep(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
-                      std::vector<Block<N>>& a_of_body, double* lambda) const {
-  for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
-    pass_group<N, ClampIncrement, Pass::sweep>(rows.data(), groups[g].first, groups[g + 1].first,
+[[gnu::flatten]] void PgsSolver::sweep(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
+                                       std::vector<Block<N>>& a_of_body, double* lambda) const {
+  // raw pointers and the count read once: the stores to λ cannot then be taken to move them
+  const RowGroup* group = groups.data();
+  const std::size_t count = groups.empty() ? 0 : groups.size() - 1;  // the last entry is the end
+  for (std::size_t g = 0; g < count; ++g) {
+    pass_group<N, ClampIncrement, Pass::sweep>(rows.data(), group[g].first, group[g + 1].first,
                                                a_of_body.data(), lambda);
   }
 }

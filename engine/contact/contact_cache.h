@@ -59,8 +59,9 @@ class ContactCache {
               const std::vector<Shape>& shapes, const std::vector<Material>& materials,
               const CacheSettings& settings, Workers* workers = nullptr);
 
-  // Appends the rows of its pairs and their warm-start λ, recording where each pair's and each
-  // contact's rows went (contact_rows.h, add_contact_rows), on `workers`' threads if given.
+  // Makes `rows` the rows of its pairs and `lambda` their warm-start λ, recording where each
+  // pair's and each contact's rows went (contact_rows.h, add_contact_rows), on `workers`'
+  // threads if given.
   void write_rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,
                   const StepSettings& step, std::vector<ConstraintRow>& rows,
                   std::vector<double>& lambda, Workers* workers = nullptr);

@@ -12,8 +12,11 @@
 namespace lamina {
 namespace {
 
+// A row as ConstraintRow's defaults make it: each row written starts as a copy of it.
+const ConstraintRow blank_row;
+
 // Where a run of pairs writes its rows and their warm-start λ: from `next` on, into vectors
-// already sized for every run's rows, their rows as ConstraintRow's defaults make them.
+// already sized for every run's rows.
 struct RowSlots {
   std::vector<ConstraintRow>& rows;
   std::vector<double>& lambda;
@@ -24,7 +27,9 @@ struct RowSlots {
 // slot; returns its index.
 int append_row(RowSlots& slots, const RowEnds& ends, const Vec3& u, double lambda_exp) {
   const int index = slots.next++;
-  write_point_row(ends, u, slots.rows[static_cast<std::size_t>(index)]);
+  ConstraintRow& row = slots.rows[static_cast<std::size_t>(index)];
+  row = blank_row;
+  write_point_row(ends, u, row);
   slots.lambda[static_cast<std::size_t>(index)] = lambda_exp;
   return index;
 }
@@ -173,12 +178,10 @@ void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBo
                       std::vector<ConstraintRow>& rows, std::vector<double>& lambda,
                       Workers* workers) {
   // Each run of the workers writes a run of the pairs. Its rows' place is counted first, so
-  // that the runs write side by side into rows sized for all of them at once (new rows, as
-  // ConstraintRow's defaults make them).
-  assert(lambda.size() == rows.size());
+  // that the runs write side by side into rows sized for all of them at once.
   const int runs = workers != nullptr ? workers->count() : 1;
   std::array<int, 65> first_row{};  // per run (at most 64), and the end
-  first_row[0] = static_cast<int>(rows.size());
+  first_row[0] = 0;
   for (int t = 0; t < runs; ++t) {
     const auto [first, last] = share_of(pairs.size(), t, runs);
     int count = 0;

@@ -59,13 +59,13 @@ struct ContactSettings {
 // Throws std::invalid_argument naming the first setting out of range.
 void validate(const ContactSettings& settings);
 
-// Appends the rows of every pair, with each row's warm-start λ (the cache's) appended to
-// `lambda`: the pair's contact rows, then its friction rows (below their contact rows, as the
-// text orders them, so a friction bound reads the λc updated in the same sweep). Records where
-// they went: each pair's `rows`, each contact's `row` and `friction_rows` (both contacts of a
-// manifold name its one friction row). Uses β and Δt. `lambda` holds one value per row of
-// `rows` on entry. With `workers`, each of their threads writes the rows of a run of the pairs
-// (each pair's rows are its own), in the same places.
+// Makes `rows` the rows of every pair and `lambda` each row's warm-start λ (the cache's),
+// whatever they held before (their memory is reused): the pair's contact rows, then its friction
+// rows (below their contact rows, as the text orders them, so a friction bound reads the λc
+// updated in the same sweep). Records where they went: each pair's `rows`, each contact's `row`
+// and `friction_rows` (both contacts of a manifold name its one friction row). Uses β and Δt.
+// With `workers`, each of their threads writes the rows of a run of the pairs (each pair's rows
+// are its own), in the same places.
 void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
                       const ContactSettings& settings, const StepSettings& step,
                       std::vector<ConstraintRow>& rows, std::vector<double>& lambda,

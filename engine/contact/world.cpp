@@ -191,9 +191,7 @@ void World::update_cache() {
 }
 
 void World::build_rows() {
-  rows_.clear();
-  lambda_.clear();
-  // the contacts' rows, λ_exp = the cached λ (zero with the cache off)
+  // the contacts' rows, λ_exp = the cached λ (zero with the cache off), in place of last step's
   cache_.write_rows(bodies_, settings_.contact, settings_.step, rows_, lambda_, workers_.get());
   first_joint_row_ = rows_.size();
   for (Joint& joint : joints_) {
