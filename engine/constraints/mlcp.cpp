@@ -129,7 +129,7 @@ double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodi
 
 template <class Pack>
 void Mlcp::pack_in_runs(std::size_t count, Workers* workers, Pack&& pack) {
-  const int runs = workers != nullptr ? workers->count() : 1;
+  const int runs = runs_on(workers);
   groups_of_run_.resize(static_cast<std::size_t>(runs));
   friction_own_in_run_.assign(static_cast<std::size_t>(runs), 1);
   const auto pack_run = [&](int t) {
@@ -140,11 +140,7 @@ void Mlcp::pack_in_runs(std::size_t count, Workers* workers, Pack&& pack) {
       if (!pack(i, groups)) friction_own_in_run_[t] = 0;
     }
   };
-  if (workers != nullptr) {
-    workers->run(pack_run);
-  } else {
-    pack_run(0);
-  }
+  run_on(workers, pack_run);
   groups_.clear();
   friction_on_own_bodies_ = true;
   for (int t = 0; t < runs; ++t) {
@@ -159,7 +155,7 @@ void Mlcp::assemble(const std::vector<RigidBody>& bodies, const std::vector<Cons
   // the layout: planar when every row and every body's I⁻¹ keep to the plane (each run of the
   // workers checks its bodies, then its rows)
   inertia_in_plane_.resize(bodies.size());
-  const int runs = workers != nullptr ? workers->count() : 1;
+  const int runs = runs_on(workers);
   planar_in_run_.assign(static_cast<std::size_t>(runs), 1);
   const auto check_bodies = [&](int t) {
     const auto [first_body, last_body] = share_of(bodies.size(), t, runs);
@@ -172,13 +168,8 @@ void Mlcp::assemble(const std::vector<RigidBody>& bodies, const std::vector<Cons
              (row.is_one_body() || inertia_in_plane_[row.Jmap[1]]);
     });
   };
-  if (workers != nullptr) {
-    workers->run(check_bodies);
-    workers->run(check_rows);
-  } else {
-    check_bodies(0);
-    check_rows(0);
-  }
+  run_on(workers, check_bodies);
+  run_on(workers, check_rows);
   planar_ = std::all_of(planar_in_run_.begin(), planar_in_run_.end(), [](unsigned char p) { return p != 0; });
   body_count_ = static_cast<int>(bodies.size());
   visit_mutable([&](auto& packed) {

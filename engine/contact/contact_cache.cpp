@@ -107,7 +107,8 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::v
   if (!settings.enabled) pairs_.clear();
   // Each run of the workers takes a run of the cached pairs and the fresh collisions of the
   // same bodies (both sorted by pair), and keeps its pairs in order; the runs are joined in order.
-  const int runs = workers != nullptr && !pairs_.empty() ? workers->count() : 1;
+  if (pairs_.empty()) workers = nullptr;  // nothing to cut: the fresh collisions alone
+  const int runs = runs_on(workers);
   next_of_run_.resize(static_cast<std::size_t>(runs));
   const auto update_run = [&](int t) {
     const auto [first, last] = share_of(pairs_.size(), t, runs);
@@ -124,11 +125,7 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::v
               t == 0 ? fresh.begin() : fresh_from(first, false),
               fresh_from(last, t == runs - 1), poses, shapes, materials, settings, next);
   };
-  if (runs > 1) {
-    workers->run(update_run);
-  } else {
-    update_run(0);
-  }
+  run_on(workers, update_run);
   for (int t = 1; t < runs; ++t) next_.insert(next_.end(), next_of_run_[t].begin(), next_of_run_[t].end());
   pairs_.swap(next_);
 }

@@ -179,7 +179,7 @@ void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBo
                       Workers* workers) {
   // Each run of the workers writes a run of the pairs. Its rows' place is counted first, so
   // that the runs write side by side into rows sized for all of them at once.
-  const int runs = workers != nullptr ? workers->count() : 1;
+  const int runs = runs_on(workers);
   std::array<int, 65> first_row{};  // per run (at most 64), and the end
   first_row[0] = 0;
   for (int t = 0; t < runs; ++t) {
@@ -196,11 +196,7 @@ void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBo
     for (std::size_t p = first; p < last; ++p) write_pair_rows(pairs[p], bodies, settings, step, slots);
     assert(slots.next == first_row[t + 1]);  // rows_of_pair counted what write_pair_rows wrote
   };
-  if (workers != nullptr) {
-    workers->run(write_run);
-  } else {
-    write_run(0);
-  }
+  run_on(workers, write_run);
 }
 
 void store_contact_lambdas(std::vector<ContactPair>& pairs, const double* lambda) {

@@ -70,18 +70,14 @@ void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt, Pitfa
 
 void integrate_with_push_out(std::vector<RigidBody>& bodies, const std::vector<Vec6>& push_out,
                              double dt, Pitfalls pitfalls, Workers* workers) {
-  const int runs = workers != nullptr ? workers->count() : 1;
+  const int runs = runs_on(workers);
   const auto step_run = [&](int t) {
     const auto [first, last] = share_of(bodies.size(), t, runs);
     for (std::size_t i = first; i < last; ++i) {
       integrate_with_push_out(bodies[i], push_out.empty() ? Vec6::Zero() : push_out[i], dt, pitfalls);
     }
   };
-  if (workers != nullptr) {
-    workers->run(step_run);
-  } else {
-    step_run(0);
-  }
+  run_on(workers, step_run);
 }
 
 }  // namespace lamina

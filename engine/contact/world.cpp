@@ -152,18 +152,14 @@ void World::detect_collisions() {
     boxes_[i] = bounding_box(shapes_[i], poses_[i]);
   }
   sort_and_sweep(boxes_, sweep_memory_, candidate_pairs_);
-  if (workers_ == nullptr) {
-    find_collisions(0, candidate_pairs_.size(), fresh_);
-    return;
-  }
-  // on threads: each its share of the candidates, in order, its collisions appended in order
-  const int threads = workers_->count();
-  fresh_of_thread_.resize(static_cast<std::size_t>(threads));
-  workers_->run([&](int t) {
-    const auto [first, last] = share_of(candidate_pairs_.size(), t, threads);
+  // each run its share of the candidates, in order, its collisions appended in order
+  const int runs = runs_on(workers_.get());
+  fresh_of_thread_.resize(static_cast<std::size_t>(runs));
+  run_on(workers_.get(), [&](int t) {
+    const auto [first, last] = share_of(candidate_pairs_.size(), t, runs);
     find_collisions(first, last, t == 0 ? fresh_ : fresh_of_thread_[t]);
   });
-  for (int t = 1; t < threads; ++t) {
+  for (int t = 1; t < runs; ++t) {
     fresh_.insert(fresh_.end(), fresh_of_thread_[t].begin(), fresh_of_thread_[t].end());
   }
 }

@@ -70,6 +70,20 @@ class Workers {
   std::vector<std::exception_ptr> failures_;  // per thread, what its share threw
 };
 
+// How many runs a piece of work is cut into on `workers`: one per thread, or one (nullptr).
+inline int runs_on(const Workers* workers) { return workers != nullptr ? workers->count() : 1; }
+
+// Calls task(t) for each run t of runs_on(workers): on the workers' threads (Workers::run), or
+// task(0) on the calling thread when there are none.
+template <class Task>
+void run_on(Workers* workers, Task&& task) {
+  if (workers != nullptr) {
+    workers->run(task);
+  } else {
+    task(0);
+  }
+}
+
 // The contiguous share [first, last) of `count` items that part `part` of `parts` takes: equal
 // shares in order, the first count % parts of them one item longer. Depends on nothing else.
 std::pair<std::size_t, std::size_t> share_of(std::size_t count, int part, int parts);

@@ -220,8 +220,7 @@ std::string threads_table(const Measurements& m) {
 std::optional<double> growth_exponent(const Measurements& m, const std::string& engine) {
   std::vector<std::pair<double, double>> points;
   for (const int base : bases(m, PyramidShape::boxes)) {
-    const std::optional<Summary> s =
-        summary(m, {engine, base, box2d_iterations});
+    const std::optional<Summary> s = summary(m, {engine, base, box2d_iterations});
     if (s) points.emplace_back(std::log(s->run.velocity_rows), std::log(s->ms));
   }
   if (points.size() < 2) return std::nullopt;
