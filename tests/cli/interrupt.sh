@@ -92,8 +92,9 @@ case $mode in
     scene=pyramid:40
     set -- run $scene --steps 100000 --allow-large --frames "$frames" --trace "$trace"
     written=$trace.tmp ;;
-  twice)  # 465 boxes at 10000 sweeps a step: ~0.5 s and ~480 kB a step
-    scene=pyramid:30
+  twice)  # 1275 boxes at 10000 sweeps a step: ~1.5 s and ~1.6 MB a step (a window wide enough
+    # for a loaded machine, where the script's polls can come a few hundred ms late)
+    scene=pyramid:50
     set -- run $scene --iterations 10000 --steps 100000 --allow-large --trace "$trace"
     written=$trace.tmp ;;
   viewer)  # 55 boxes at 10000 sweeps a step, each step recorded for the viewer
@@ -116,7 +117,7 @@ pid=$!
 wait_while 60 "$written not written" not_written
 if [ "$mode" = twice ]; then
   # The first signal just after lamina has written a step, so that the step it waits for has
-  # ~0.5 s to run; the second once the first is taken (not merged with it), a few ms later.
+  # ~1.5 s to run; the second once the first is taken (not merged with it), a few ms later.
   wait_while 30 "$written did not grow" same_size "$written" "$(stat -c %s "$written")"
   kill -$signal $pid
   wait_while 10 "the first SIG$signal not taken" pending $pid
