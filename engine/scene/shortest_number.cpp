@@ -1,126 +1,58 @@
 #include "scene/shortest_number.h"
 
-#include <array>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
-#include <vector>
 
-// The shortest decimal that reads back to a double, found by Raffaello Giulietti's Schubfach
-// method ("The Schubfach way to render doubles", 2020; the algorithm of Java's Double.toString
-// since JDK 19), written in the layout of std::to_chars: the same characters, byte for byte
-// (tests/test_trace.cpp compares the two on 1.4 million doubles). It exists because a trace
-// writes about 9 000 numbers a step and std::to_chars spent 517 instructions on each, more
-// than the physics of the step they record (issue 19); this takes 311 (docs/performance.md).
-// Zero is written directly; subnormal, infinite and NaN values go to std::to_chars (a trace
-// never has them; subnormals are the corner of the method, where a few bits leave many
-// decimals to choose from).
+#include "scene/powers_of_ten.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+// The shortest decimal that reads back to a double, written in the layout of std::to_chars:
+// the same characters, byte for byte (tests/test_trace.cpp compares the two on 1.4 million
+// doubles). It exists because a trace writes about 9 000 numbers a step and std::to_chars
+// spent 517 instructions on each, more than the physics of the step they record (issue 19);
+// this takes 226 (docs/performance.md, "Traces"). The decimal is found by Junekey Jeon's
+// Dragonbox (one 64 × 128-bit product) where the integer parts decide, which is 99 numbers in
+// 100, and else by Raffaello Giulietti's Schubfach method ("The Schubfach way to render
+// doubles", 2020; Java's Double.toString since JDK 19: three products, exact in every case);
+// both tables of powers of ten are computed once, exactly, from their definitions. Zero is
+// written directly; subnormal, infinite and NaN values go to std::to_chars (a trace never has
+// them; subnormals are the corner of the method, where a few bits leave many decimals to
+// choose from).
 namespace lamina {
 namespace {
 
 using u64 = std::uint64_t;
-using u128 = unsigned __int128;
+__extension__ typedef unsigned __int128 u128;  // GCC and Clang's 128-bit integer
 
 // A double v = c 2^q with 2^52 ≤ c < 2^53 (normal) is rounded to from every real in the
 // interval R_v around it; the shortest decimal in R_v is sought on the grid 10^k with k chosen
 // so that R_v is narrower than 10^(k+1): there is at most one multiple of 10^(k+1) in it (the
 // shortest if it is there), else the multiple of 10^k next to v on the side R_v holds.
 
-// ⌊log10 2^e⌋, ⌊log10 (3/4 · 2^e)⌋ and ⌊log2 10^e⌋ for |e| ≤ 1100, in fixed point (the
-// constants are ⌊log10 2 · 2^41⌋, ⌊log10 3/4 · 2^41⌋ and ⌊log2 10 · 2^38⌋; right shifts of
-// negative numbers floor on every compiler Lamina builds with).
-int floor_log10_pow2(int e) { return static_cast<int>((e * 661971961083LL) >> 41); }
-int floor_log10_three_quarters_pow2(int e) {
-  return static_cast<int>((e * 661971961083LL - 274743187321LL) >> 41);
-}
-int floor_log2_pow10(int e) { return static_cast<int>((e * 913124641741LL) >> 38); }
-
-// The scaled powers of ten: g(k) = ⌊10^−k 2^(125 − ⌊log2 10^−k⌋)⌋ + 1, a 126-bit number in
-// [2^125, 2^126], held as its high and low 63 bits. k runs over the decimal exponents of
-// normal doubles.
-constexpr int k_min = -324;
-constexpr int k_max = 292;
-struct ScaledPower {
-  u64 high;  // g >> 63
-  u64 low;   // g mod 2^63
-};
-
-// A non-negative integer of any size, little-endian in base 2^32: enough to compute g(k)
-// exactly, once, from its definition.
-class BigNumber {
- public:
-  explicit BigNumber(std::vector<std::uint32_t> limbs) : limbs_(std::move(limbs)) {}
-  void multiply(std::uint32_t m) {
-    u64 carry = 0;
-    for (std::uint32_t& limb : limbs_) {
-      const u64 product = u64{limb} * m + carry;
-      limb = static_cast<std::uint32_t>(product);
-      carry = product >> 32;
-    }
-    if (carry != 0) limbs_.push_back(static_cast<std::uint32_t>(carry));
-  }
-  void divide(std::uint32_t d) {  // by d, rounding down
-    u64 rest = 0;
-    for (auto limb = limbs_.rbegin(); limb != limbs_.rend(); ++limb) {
-      const u64 part = (rest << 32) | *limb;
-      *limb = static_cast<std::uint32_t>(part / d);
-      rest = part % d;
-    }
-  }
-  // Bits [from, from + count) as a number, count ≤ 64; bits below 0 and above the top are 0.
-  u64 bits(int from, int count) const {
-    u64 value = 0;
-    for (int i = count - 1; i >= 0; --i) {
-      const int bit = from + i;
-      const bool set = bit >= 0 && bit / 32 < static_cast<int>(limbs_.size()) &&
-                       ((limbs_[static_cast<std::size_t>(bit / 32)] >> (bit % 32)) & 1u) != 0;
-      value = (value << 1) | (set ? 1u : 0u);
-    }
-    return value;
-  }
-
- private:
-  std::vector<std::uint32_t> limbs_;
-};
-
-// g(k) from ⌊n 2^−shift⌋ with n = 10^−k 2^(125 − ⌊log2 10^−k⌋ + shift).
-ScaledPower scaled_power(const BigNumber& n, int shift) {
-  constexpr u64 mask63 = (u64{1} << 63) - 1;
-  ScaledPower g{n.bits(shift + 63, 63), n.bits(shift, 63) + 1};
-  if (g.low > mask63) {  // the + 1 carried
-    g.low = 0;
-    g.high += 1;
-  }
-  return g;
-}
-
-using ScaledPowers = std::array<ScaledPower, k_max - k_min + 1>;
-
-ScaledPowers make_scaled_powers() {
-  ScaledPowers table{};
-  // k ≤ 0: 10^−k is an integer, g(k) − 1 its bits from ⌊log2 10^−k⌋ − 125 up.
-  BigNumber power_of_ten({1});
-  for (int k = 0; k >= k_min; --k) {
-    table[static_cast<std::size_t>(k - k_min)] = scaled_power(power_of_ten, floor_log2_pow10(-k) - 125);
-    power_of_ten.multiply(10);
-  }
-  // k > 0: ⌊2^m / 10^k⌋ = ⌊⌊2^top / 10^k⌋ / 2^(top − m)⌋, the inner floor divided down by 10
-  // one k at a time (⌊⌊x/a⌋/b⌋ = ⌊x/(ab)⌋ for integers); m = 125 − ⌊log2 10^−k⌋ ≤ 1096 < top.
-  constexpr int top = 1152;
-  std::vector<std::uint32_t> limbs(top / 32 + 1, 0);
-  limbs.back() = 1;
-  BigNumber quotient(std::move(limbs));
-  for (int k = 1; k <= k_max; ++k) {
-    quotient.divide(10);
-    const int m = 125 - floor_log2_pow10(-k);
-    table[static_cast<std::size_t>(k - k_min)] = scaled_power(quotient, top - m);
-  }
-  return table;
-}
-
+// Schubfach's g(k) and Dragonbox's φ(k) (scene/powers_of_ten.h), each table's start fetched
+// once.
 const ScaledPower& scaled_power_of(int k) {
-  static const ScaledPowers table = make_scaled_powers();
-  return table[static_cast<std::size_t>(k - k_min)];
+  static const ScaledPower* const table = scaled_powers();
+  return table[k - scaled_k_min];
+}
+const WidePower& wide_power_of(int k) {
+  static const WidePower* const table = wide_powers();
+  return table[k - wide_k_min];
+}
+
+// ⌊x φ 2^−128⌋, and whether x φ 2^−128 is taken for whole: the 64 bits below the point are 0
+// (the product's lowest 64 bits are not computed; Dragonbox's proofs allow it).
+struct WideProduct {
+  u64 floor;
+  bool whole;
+};
+WideProduct multiply_high(u64 x, const WidePower& phi) {
+  const u128 sum = u128{x} * phi.high + static_cast<u64>((u128{x} * phi.low) >> 64);
+  return {static_cast<u64>(sum >> 64), static_cast<u64>(sum) == 0};
 }
 
 // ⌊c g 2^−127⌋ rounded to odd (its lowest bit set if any bit below was): Schubfach's r_o.
@@ -147,11 +79,47 @@ Decimal without_trailing_zeros(Decimal d) {
   return d;
 }
 
+// The first try, with one product instead of three: Junekey Jeon's Dragonbox ("Dragonbox: a
+// new floating-point binary-to-decimal conversion algorithm", 2020), for v = c 2^q with
+// c ≠ 2^52 (R_v = [v − 2^(q−1), v + 2^(q−1)], its ends in it when c is even). Scaled by 10^−m,
+// m = ⌊log10 2^q⌋ − 2, R_v is δ = 2^q 10^−m wide, 100 ≤ δ < 1000: it holds at most one
+// multiple of 1000 (then the shortest), and at least one of 100. With β = q + ⌊log2 10^−m⌋
+// (6 … 9), the right end z = (2c + 1) 2^(q−1) 10^−m has ⌊z⌋ = ⌊((2c + 1) 2^β) φ(−m) 2^−128⌋
+// and ⌊δ⌋ = ⌊φ(−m) 2^(β−127)⌋ (Dragonbox's theorems: exact for every double). The cases where
+// the fractions decide — a multiple of 1000 at an excluded or the left end, v halfway
+// between two multiples of 100 or near it (one in about a hundred) — are left to the exact
+// method below: false, and nothing written.
+bool shortest_decimal_by_one_product(u64 c, int q, Decimal& d) {
+  const int m = floor_log10_pow2(q) - 2;
+  const WidePower& phi = wide_power_of(-m);
+  const int beta = q + floor_log2_pow10(-m);
+  const u64 width = phi.high >> (63 - beta);                       // ⌊δ⌋
+  const WideProduct z = multiply_high(((c << 1) | 1) << beta, phi);  // ⌊z⌋
+  const u64 thousands = z.floor / 1000;
+  const u64 rest = z.floor - thousands * 1000;
+  if (rest < width) {  // 1000 ⌊z / 1000⌋ is in R_v, unless it is z itself and R_v is open
+    if (rest == 0 && z.whole && (c & 1) != 0) return false;
+    d = without_trailing_zeros({thousands, m + 3});
+    return true;
+  }
+  if (rest == width) return false;
+  // No multiple of 1000: the multiple of 100 nearest to v = z − δ/2, from (rest − δ/2 + 50) / 100,
+  // unless that is a whole number (v at or near halfway).
+  const u64 from_thousands = rest - width / 2 + 50;
+  const u64 hundreds = from_thousands / 100;
+  if (hundreds * 100 == from_thousands) return false;
+  d = {thousands * 10 + hundreds, m + 2};
+  return true;
+}
+
 // The shortest decimal in R_v of v = c 2^q (normal, positive); of two, the nearer to v, and
 // of two as near, the one with an even last digit.
 Decimal shortest_decimal(u64 c, int q) {
   if (q < 0 && q > -53 && ((c >> -q) << -q) == c) return without_trailing_zeros({c >> -q, 0});
-  // 2^52 2^q has a closer neighbour below, unless it is the least normal double
+  Decimal first_try{};
+  if (c != (u64{1} << 52) && shortest_decimal_by_one_product(c, q, first_try)) return first_try;
+  // Schubfach's exact method (three products). 2^52 2^q has a closer neighbour below, unless
+  // it is the least normal double.
   const bool regular = c != (u64{1} << 52) || q == -1074;
   const u64 open = c & 1;                     // R_v excludes its ends when c is odd
   const u64 cb = c << 2;                      // 4 v, and its interval's ends, in units of 2^q
@@ -213,22 +181,60 @@ void write_eight_digits(char* out, std::uint32_t m) {
   std::memcpy(out, &text, sizeof text);
 }
 
-// The decimal digits of a number, made eight at a time into a buffer with room after them, so
-// that they go to their places in copies of one constant size (a few moves, not a call).
+#if defined(__SSE2__)
+// The sixteen decimal digits of x < 10^16, leading zeros included, at `out` (the first
+// character at out[0]), made in the sixteen 16-bit lanes of two SSE2 registers, a lane per
+// digit. x is cut into two halves of eight digits and each half into two groups of four (/10^4
+// as · 3518437209 / 2^45, exact below 2^32), giving the groups a, b, c, d; each group v, times
+// 4, fills the four 16-bit lanes of a 64-bit half, and lane j becomes t_j = ⌊v / 10^(3−j)⌋ by
+// two high-half products: ⌊4v · m_j / 2^16⌋, then ⌊· 2^(16−s_j) / 2^16⌋, a right shift by s_j
+// (SSE2 shifts all lanes alike). The pairs (m_j, s_j) = (8389, 9), (5243, 5), (3277, 1),
+// (32768, 1) are exact for every v < 10^4 (all were checked), and 4v < 2^16. The digit is
+// then t_j − 10 t_(j−1). Half the instructions of two write_eight_digits, which machines
+// without SSE2 use (docs/performance.md, "Traces").
+void write_sixteen_digits(char* out, u64 x) {
+  const u64 high = x / 100000000;
+  const __m128i halves = _mm_set_epi64x(static_cast<long long>(x - high * 100000000),
+                                        static_cast<long long>(high));
+  const __m128i tens_of_thousands = _mm_srli_epi64(_mm_mul_epu32(halves, _mm_set1_epi64x(3518437209)), 45);
+  const __m128i rest = _mm_sub_epi64(halves, _mm_mul_epu32(tens_of_thousands, _mm_set1_epi64x(10000)));
+  // a b c d in 32-bit lanes, then in 16-bit lanes (twice) and times 4
+  const __m128i groups = _mm_or_si128(tens_of_thousands, _mm_slli_epi64(rest, 32));
+  const __m128i fours = _mm_slli_epi16(_mm_packs_epi32(groups, groups), 2);
+  const __m128i pairs = _mm_unpacklo_epi16(fours, fours);  // a a b b c c d d
+  const __m128i divide = _mm_setr_epi16(8389, 5243, 3277, -32768, 8389, 5243, 3277, -32768);
+  const __m128i shift = _mm_setr_epi16(128, 2048, -32768, -32768, 128, 2048, -32768, -32768);
+  const auto digits = [&](__m128i lanes) {  // the eight digits of two groups
+    const __m128i t = _mm_mulhi_epu16(_mm_mulhi_epu16(lanes, divide), shift);
+    return _mm_sub_epi16(t, _mm_mullo_epi16(_mm_slli_epi64(t, 16), _mm_set1_epi16(10)));
+  };
+  const __m128i bytes = _mm_packus_epi16(digits(_mm_unpacklo_epi32(pairs, pairs)),
+                                         digits(_mm_unpackhi_epi32(pairs, pairs)));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_add_epi8(bytes, _mm_set1_epi8('0')));
+}
+#else
+void write_sixteen_digits(char* out, u64 x) {
+  const u64 high = x / 100000000;
+  write_eight_digits(out, static_cast<std::uint32_t>(high));
+  write_eight_digits(out + 8, static_cast<std::uint32_t>(x - high * 100000000));
+}
+#endif
+
+// The decimal digits of a number, made sixteen at a time into a buffer with room after them,
+// so that they go to their places in copies of one constant size (a few moves, not a call).
 class DigitText {
  public:
   static constexpr int block = 24;  // characters a copy writes: room the destination must have
 
-  // The last n ≤ 24 digits of d < 10^24 (zeros before it if n is more than its digits).
+  // The last n ≤ 24 digits of d (zeros before it if n is more than its digits).
   DigitText(u64 d, int n) : n_(n) {
-    const u64 high = d / 100000000;  // the digits before the last eight
-    const u64 top = high / 100000000;  // and before the last sixteen
-    write_eight_digits(text_ + 24, static_cast<std::uint32_t>(d - high * 100000000));
-    if (n > 8) write_eight_digits(text_ + 16, static_cast<std::uint32_t>(high - top * 100000000));
-    if (n == 17) {  // a double's longest: its first digit alone
-      text_[15] = static_cast<char>('0' + top);
-    } else if (n > 17) {
+    constexpr u64 ten_to_16 = 10000000000000000u;
+    const u64 top = d / ten_to_16;  // the digits before the last sixteen
+    write_sixteen_digits(text_ + 16, d - top * ten_to_16);
+    if (n > 17) {  // only a whole number past 10^17
       write_eight_digits(text_ + 8, static_cast<std::uint32_t>(top));
+    } else {  // a double's seventeenth digit (a zero no copy takes when n < 17: no branch on
+      text_[15] = static_cast<char>('0' + top);  // 16 or 17 digits, which is a coin toss)
     }
     std::memset(text_ + 32, 0, block);  // what a copy takes after the last digit
   }
@@ -329,7 +335,8 @@ char* write_shortest(char* first, double x, bool float_form) {
   if (biased_exponent == 0 || biased_exponent == 0x7ff) {  // subnormal, infinite, NaN
     return std::to_chars(first, first + shortest_room, x).ptr;
   }
-  if ((bits >> 63) != 0) *first++ = '-';
+  *first = '-';  // kept for a negative x (without a branch: the sign is a coin toss)
+  first += bits >> 63;
   const u64 c = (bits & ((u64{1} << 52) - 1)) | (u64{1} << 52);
   const int q = biased_exponent - 1075;
   return write_decimal(first, shortest_decimal(c, q), c, q, float_form);

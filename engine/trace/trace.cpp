@@ -1,6 +1,7 @@
 #include "trace/trace.h"
 
 #include <cassert>
+#include <string_view>
 
 namespace lamina {
 namespace {
@@ -34,7 +35,7 @@ void fill_contact_state(ContactState& state, const Scene& scene, const ContactIn
   state.normal_impulse = unsigned_zero(c.lambda_normal * dt);
   state.tangent_impulse = unsigned_zero(c.lambda_tangent * dt);
   state.cached = c.cached;
-  const char* const origin = origin_name(c.origin);
+  const std::string_view origin = origin_name(c.origin);
   if (state.origin != origin) state.origin = origin;  // most contacts keep theirs from step to step
 }
 

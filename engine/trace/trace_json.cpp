@@ -1,5 +1,6 @@
 #include "trace/trace_json.h"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -72,19 +73,13 @@ class LineWriter {
   // rest, UTF-8 included, as it is. (nlohmann's dump, one value per string, cost a tenth of the
   // trace's time on a pyramid.)
   void write(const std::string& s) {
-    if (s.size() <= long_name) {  // most names: copied, then checked for what needs escapes
-      char* out = end_;
-      *out++ = '"';
-      bool plain = true;
-      for (const char ch : s) {
-        plain &= ch != '"' && ch != '\\' && static_cast<unsigned char>(ch) >= 0x20;
-        *out++ = ch;
-      }
-      if (plain) {
-        *out++ = '"';
-        end_ = out;
-        return;
-      }
+    const std::size_t n = s.size();
+    if (n <= long_name && plain(s)) {  // most names: copied whole
+      end_[0] = '"';
+      std::memcpy(end_ + 1, s.data(), n);
+      end_[n + 1] = '"';
+      end_ += n + 2;
+      return;
     }
     put('"');
     for (const char ch : s) {
@@ -110,6 +105,20 @@ class LineWriter {
   }
 
  private:
+  // True when s has nothing to escape: no '"', '\\' or control character (a table look-up per
+  // character: a name is checked on every line it is written in).
+  static bool plain(const std::string& s) {
+    static constexpr auto escaped = [] {
+      std::array<unsigned char, 256> table{};
+      for (int c = 0; c < 0x20; ++c) table[static_cast<std::size_t>(c)] = 1;
+      table['"'] = table['\\'] = 1;
+      return table;
+    }();
+    unsigned char any = 0;
+    for (const char ch : s) any |= escaped[static_cast<unsigned char>(ch)];
+    return any == 0;
+  }
+
   void put(char c) {  // with a check: for text that may be of any length
     make_room(1);
     *end_++ = c;
