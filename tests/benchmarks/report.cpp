@@ -1,14 +1,14 @@
 #include "benchmarks/report.h"
 
-#include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <optional>
 #include <sstream>
-#include <stdexcept>
 #include <thread>
 #include <tuple>
+
+#include "benchmarks/report_csv.h"
+#include "benchmarks/report_summary.h"
 
 #ifdef LAMINA_HAVE_BOX2D_V3
 #include "benchmarks/box2d_v3_runs.h"
@@ -17,73 +17,7 @@
 namespace lamina {
 namespace {
 
-// The sweeps Lamina's docs give a standing pyramid: WorldSettings' default
-// (docs/ch5-walkthrough.md).
-constexpr int recommended_iterations = 10;
-constexpr int box2d_iterations = 8;  // Box2D's velocity iterations (Box2dSettings)
-
-std::string fixed(double value, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", digits, value);
-  return text;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-// The repetitions of one benchmark: their median times, and the run whose time is nearest the
-// median for everything else (contacts, standing: the same in every repetition).
-struct Summary {
-  int repetitions = 0;
-  double ms = 0.0;       // median CPU ms per step
-  double ms_min = 0.0;   // fastest repetition
-  double ms_max = 0.0;   // slowest repetition
-  double wall_ms = 0.0;  // median wall-clock ms per step
-  PyramidRun run;        // the median repetition
-};
-
-std::optional<Summary> summary(const Measurements& m, const RunKey& key) {
-  const auto it = m.runs.find(key);
-  if (it == m.runs.end() || it->second.empty()) return std::nullopt;
-  std::vector<double> ms;
-  std::vector<double> wall;
-  for (const PyramidRun& run : it->second) {
-    ms.push_back(run.ms_per_step);
-    wall.push_back(run.wall_ms_per_step);
-  }
-  Summary s{static_cast<int>(ms.size()), median(ms), *std::min_element(ms.begin(), ms.end()),
-            *std::max_element(ms.begin(), ms.end()), median(wall), it->second.front()};
-  for (const PyramidRun& run : it->second) {
-    if (std::abs(run.ms_per_step - s.ms) < std::abs(s.run.ms_per_step - s.ms)) s.run = run;
-  }
-  return s;
-}
-
-RunKey box2d_key(int base) { return {"Box2D", base, box2d_iterations}; }
-
-// Lamina's default method at its default sweeps, and Box2D v3 at its substeps.
-constexpr int v3_substeps = 4;
-RunKey islands_key(int base) { return {"Lamina islands", base, recommended_iterations}; }
-RunKey v3_key(int base) { return {"Box2D v3", base, v3_substeps}; }
-
-// An engine on the hexagon pyramid, at Box2D's sweeps (8 / 3) for both.
-RunKey hexagon_key(const std::string& engine, int base) {
-  return {engine, base, box2d_iterations, PyramidShape::hexagons};
-}
-
-// The bases measured for pyramids of that shape, in increasing order.
-std::vector<int> bases(const Measurements& m, PyramidShape shape) {
-  std::vector<int> out;
-  for (const auto& [key, runs] : m.runs) {
-    if (key.shape != shape) continue;
-    if (std::find(out.begin(), out.end(), key.base) == out.end()) out.push_back(key.base);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
+using namespace report;
 
 std::string read_first_line(const std::string& path, const std::string& prefix) {
   std::ifstream in(path);
@@ -319,60 +253,6 @@ std::string hexagons_table(const Measurements& m) {
       << " m sideways. CPU time per step against the box pyramid of the same count (the same "
          "base, 8 / 3 sweeps, this run), medians, hexagons ÷ boxes:"
       << boxes << ".\n";
-  return out.str();
-}
-
-// Every benchmark on pyramids of that shape, a line each; the third column counts the bodies
-// under the shape's name ("boxes", "hexagons").
-std::string runs_csv(const Measurements& m, PyramidShape shape) {
-  std::ostringstream out;
-  out << "engine,base," << shape_name(shape)
-      << ",velocity_iterations,position_iterations,repetitions,ms_per_step,"
-         "ms_per_step_min,ms_per_step_max,wall_ms_per_step,contact_points,apex_shift_m,"
-         "largest_sideways_m,standing\n";
-  for (const auto& [key, runs] : m.runs) {
-    if (key.shape != shape) continue;
-    const Summary s = *summary(m, key);
-    out << key.engine << ',' << key.base << ',' << s.run.bodies << ',' << key.iterations << ','
-        << s.run.position_iterations << ',' << s.repetitions << ',' << fixed(s.ms, 4) << ','
-        << fixed(s.ms_min, 4) << ',' << fixed(s.ms_max, 4) << ',' << fixed(s.wall_ms, 4) << ','
-        << s.run.contact_points << ',' << fixed(s.run.apex_shift, 4) << ','
-        << fixed(s.run.largest_sideways, 4) << ',' << (s.run.standing() ? 1 : 0) << '\n';
-  }
-  return out.str();
-}
-
-std::string scaling_csv(const Measurements& m) {
-  std::ostringstream out;
-  out << "base,boxes,lamina_ms_per_step,box2d_ms_per_step,lamina_velocity_rows,"
-         "box2d_velocity_rows,lamina_us_per_row_sweep,box2d_us_per_row_sweep,"
-         "islands_ms_per_step,box2d_v3_ms_per_step\n";
-  // a base an engine was not run at (or Box2D v3 not built): NaN, which the plot skips
-  const auto ms_or_nan = [](const std::optional<Summary>& s) {
-    return s ? fixed(s->ms, 4) : std::string("NaN");
-  };
-  for (const int base : bases(m, PyramidShape::boxes)) {
-    const std::optional<Summary> l = summary(m, {"Lamina", base, box2d_iterations});
-    const std::optional<Summary> b = summary(m, box2d_key(base));
-    if (!l || !b) continue;
-    out << base << ',' << l->run.bodies << ',' << fixed(l->ms, 4) << ',' << fixed(b->ms, 4) << ','
-        << l->run.velocity_rows << ',' << b->run.velocity_rows << ','
-        << fixed(l->run.us_per_row_sweep(), 5) << ',' << fixed(b->run.us_per_row_sweep(), 5)
-        << ',' << ms_or_nan(summary(m, islands_key(base))) << ','
-        << ms_or_nan(summary(m, v3_key(base))) << '\n';
-  }
-  return out.str();
-}
-
-std::string warm_start_csv(const Measurements& m) {
-  std::ostringstream out;
-  out << "base,first_step,steps,reduction,warm_sweeps,cold_sweeps\n";
-  for (const WarmStartRun& w : m.warm_starts) {
-    for (size_t r = 0; r < w.reductions.size(); ++r) {
-      out << w.base << ',' << w.first_step << ',' << w.steps << ',' << w.reductions[r] << ','
-          << fixed(w.warm_sweeps[r], 2) << ',' << fixed(w.cold_sweeps[r], 2) << '\n';
-    }
-  }
   return out.str();
 }
 
