@@ -1,5 +1,6 @@
 // Issue 8's benchmarks: Lamina beside Box2D 2.4.1 on pyramids of boxes (pyramid_runs.h), and
-// issue 20's on pyramids of hexagons; then the tables of docs/performance.md (report.h).
+// issue 20's on pyramids of hexagons; issue 19's peers, two threads and traces (trace_runs.h);
+// then the tables of docs/performance.md (report.h).
 //
 //   lamina_benchmarks [--report=FOLDER] [--doc=FILE.md] [Google Benchmark flags]
 //
@@ -73,6 +74,17 @@ void lamina_pyramid_two_threads(benchmark::State& state) {
   }
 }
 
+// Issue 19's trace bar: pyramid:20 traced for 10 s by `solver` (trace_runs.h); the manual time
+// is the trace's CPU time per step.
+void lamina_trace(benchmark::State& state, const std::string& solver) {
+  for (auto _ : state) {
+    const TraceRun run = run_traced_pyramid(20, solver, standing_steps);
+    state.SetIterationTime(run.trace_ms / 1e3);
+    state.counters["physics_ms"] = run.physics_ms;
+    measurements.traces[solver].push_back(run);
+  }
+}
+
 void lamina_pyramid(benchmark::State& state) { lamina_run(state, PyramidShape::boxes); }
 void box2d_pyramid(benchmark::State& state) { box2d_run(state, PyramidShape::boxes); }
 void lamina_hexagon_pyramid(benchmark::State& state) { lamina_run(state, PyramidShape::hexagons); }
@@ -120,6 +132,11 @@ const auto* const two_threads_boxes = over_bases(
 const auto* const v3_boxes =
     over_bases(benchmark::RegisterBenchmark("box2d_v3_pyramid", box2d_v3_pyramid), {20, 40, 80});
 #endif
+// The trace's cost by `pgs` and by the default method.
+const auto* const traces_pgs =
+    per_step(benchmark::RegisterBenchmark("lamina_trace/pgs", lamina_trace, std::string("pgs")));
+const auto* const traces_islands = per_step(
+    benchmark::RegisterBenchmark("lamina_trace/islands", lamina_trace, std::string("islands")));
 // Hexagon pyramids at Box2D's sweeps, both engines, bases 10, 20 and 40.
 const auto* const lamina_hexagons = per_step(
     benchmark::RegisterBenchmark("lamina_hexagon_pyramid", lamina_hexagon_pyramid)
@@ -171,7 +188,7 @@ int main(int argc, char** argv) {
     measurements.load_after = load_average();
     const Tables tables = make_tables(measurements);
     for (const char* name :
-         {"machine", "pyramids", "peers", "threads", "scaling", "warm_start", "hexagons"}) {
+         {"machine", "pyramids", "peers", "threads", "scaling", "warm_start", "hexagons", "traces"}) {
       std::cout << "\n" << tables.at(name);
     }
     if (!report.empty()) write_tables(tables, report);

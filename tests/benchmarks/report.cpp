@@ -256,6 +256,34 @@ std::string hexagons_table(const Measurements& m) {
   return out.str();
 }
 
+// Issue 19's trace bar, a line per method: the CPU ms per step of the physics and of writing
+// its trace, timed apart in the same runs (trace_runs.h), and the trace ÷ physics of each run.
+std::string traces_table(const Measurements& m) {
+  std::ostringstream out;
+  std::ostringstream verdicts;
+  out << "| method | physics (`World::step`), CPU ms per step | trace (record, JSON line, "
+         "written), CPU ms per step | trace ÷ physics | trace file |\n|---|---|---|---|---|\n";
+  std::size_t repetitions = 0;
+  for (const auto& [solver, runs] : m.traces) {
+    std::vector<double> physics, trace, ratio;
+    for (const TraceRun& run : runs) {
+      physics.push_back(run.physics_ms);
+      trace.push_back(run.trace_ms);
+      ratio.push_back(run.trace_ms / run.physics_ms);
+    }
+    repetitions = runs.size();
+    out << "| `" << solver << "` | " << fixed(median(physics), 3) << " | " << fixed(median(trace), 3)
+        << " | " << fixed(median(ratio), 2) << "× | " << fixed(runs.front().megabytes, 0) << " MB |\n";
+    verdicts << "- `" << solver << "`: trace ÷ physics = " << against(median(ratio), 1.0) << ".\n";
+  }
+  out << "\npyramid:20, " << standing_steps << " steps a run, medians of " << repetitions
+      << " runs. The thread's CPU time, user and system: the kernel's copying of the text into "
+         "its page cache is part of writing the trace. The ratio is each run's, so both sides "
+         "of it saw the same machine.\n"
+      << verdicts.str();
+  return out.str();
+}
+
 }  // namespace
 
 bool RunKey::operator<(const RunKey& o) const {
@@ -271,6 +299,7 @@ Tables make_tables(const Measurements& m) {
           {"scaling", scaling_table(m)},
           {"warm_start", warm_start_table(m)},
           {"hexagons", hexagons_table(m)},
+          {"traces", traces_table(m)},
           {"pyramids.csv", runs_csv(m, PyramidShape::boxes)},
           {"scaling.csv", scaling_csv(m)},
           {"warm_start.csv", warm_start_csv(m)},

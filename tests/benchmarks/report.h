@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "benchmarks/pyramid_runs.h"
+#include "benchmarks/trace_runs.h"
 
 namespace lamina {
 
@@ -23,15 +24,16 @@ struct RunKey {
 };
 
 struct Measurements {
-  std::map<RunKey, std::vector<PyramidRun>> runs;  // every repetition of every benchmark
-  std::vector<WarmStartRun> warm_starts;           // the warm-start measurements
-  std::string load_before;                         // /proc/loadavg when the runs started
-  std::string load_after;                          // and when they ended
+  std::map<RunKey, std::vector<PyramidRun>> runs;       // every repetition of every benchmark
+  std::vector<WarmStartRun> warm_starts;                // the warm-start measurements
+  std::map<std::string, std::vector<TraceRun>> traces;  // every traced run, by method
+  std::string load_before;                              // /proc/loadavg when the runs started
+  std::string load_after;                               // and when they ended
 };
 
-// Named tables: "machine", "pyramids", "peers", "threads", "scaling", "warm_start", "hexagons"
-// (Markdown), and the
-// CSV files "pyramids.csv", "scaling.csv", "warm_start.csv", "hexagons.csv".
+// Named tables: "machine", "pyramids", "peers", "threads", "scaling", "warm_start", "hexagons",
+// "traces" (Markdown), and the CSV files "pyramids.csv", "scaling.csv", "warm_start.csv",
+// "hexagons.csv".
 using Tables = std::map<std::string, std::string>;
 Tables make_tables(const Measurements& measurements);
 

@@ -5,15 +5,6 @@
 #include <cstdio>
 
 namespace lamina::report {
-namespace {
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-}  // namespace
 
 std::optional<Summary> summary(const Measurements& m, const RunKey& key) {
   const auto it = m.runs.find(key);
@@ -49,6 +40,12 @@ std::vector<int> bases(const Measurements& m, PyramidShape shape) {
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 std::string fixed(double value, int digits) {

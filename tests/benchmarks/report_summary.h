@@ -39,6 +39,9 @@ std::optional<Summary> summary(const Measurements& m, const RunKey& key);
 // The bases measured for pyramids of that shape, in increasing order.
 std::vector<int> bases(const Measurements& m, PyramidShape shape);
 
+// The median of the values (the mean of the middle two for an even count).
+double median(std::vector<double> values);
+
 // `value` with `digits` decimals: "0.833".
 std::string fixed(double value, int digits);
 
