@@ -43,6 +43,10 @@ struct WorldReport {
   std::vector<ContactInfo> contacts() const;
 };
 
+// Contact k of a pair, in world terms.
+ContactInfo contact_info(const ContactPair& pair, int k);
+// The contact points of the pairs.
+std::size_t contact_count(const std::vector<ContactPair>& pairs);
 // The contacts of the pairs, in row order.
 std::vector<ContactInfo> contact_infos(const std::vector<ContactPair>& pairs);
 

@@ -196,8 +196,10 @@ void write_sixteen_digits(char* out, u64 x) {
   const u64 high = x / 100000000;
   const __m128i halves = _mm_set_epi64x(static_cast<long long>(x - high * 100000000),
                                         static_cast<long long>(high));
-  const __m128i tens_of_thousands = _mm_srli_epi64(_mm_mul_epu32(halves, _mm_set1_epi64x(3518437209)), 45);
-  const __m128i rest = _mm_sub_epi64(halves, _mm_mul_epu32(tens_of_thousands, _mm_set1_epi64x(10000)));
+  const __m128i tens_of_thousands =
+      _mm_srli_epi64(_mm_mul_epu32(halves, _mm_set1_epi64x(3518437209)), 45);
+  const __m128i rest =
+      _mm_sub_epi64(halves, _mm_mul_epu32(tens_of_thousands, _mm_set1_epi64x(10000)));
   // a b c d in 32-bit lanes, then in 16-bit lanes (twice) and times 4
   const __m128i groups = _mm_or_si128(tens_of_thousands, _mm_slli_epi64(rest, 32));
   const __m128i fours = _mm_slli_epi16(_mm_packs_epi32(groups, groups), 2);

@@ -60,10 +60,15 @@ void trace_step(const Scene& scene, const World& world, long step, TraceStep& re
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!scene.bodies[i].is_static) fill_body_state(record.bodies[k++], scene.bodies[i].name, bodies[i]);
   }
-  const std::vector<ContactInfo> contacts = world.contacts();  // made on each call: once
-  record.contacts.resize(contacts.size());
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    fill_contact_state(record.contacts[i], scene, contacts[i], world.settings().step.dt);
+  // Read from the contact pairs in place (World::contacts() would make a list of them first).
+  const std::vector<ContactPair>& pairs = world.contact_pairs();
+  record.contacts.resize(contact_count(pairs));
+  const double dt = world.settings().step.dt;
+  std::size_t i = 0;
+  for (const ContactPair& pair : pairs) {
+    for (int k = 0; k < pair.count; ++k) {
+      fill_contact_state(record.contacts[i++], scene, contact_info(pair, k), dt);
+    }
   }
 }
 

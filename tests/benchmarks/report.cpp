@@ -272,8 +272,9 @@ std::string traces_table(const Measurements& m) {
       ratio.push_back(run.trace_ms / run.physics_ms);
     }
     repetitions = runs.size();
-    out << "| `" << solver << "` | " << fixed(median(physics), 3) << " | " << fixed(median(trace), 3)
-        << " | " << fixed(median(ratio), 2) << "× | " << fixed(runs.front().megabytes, 0) << " MB |\n";
+    out << "| `" << solver << "` | " << fixed(median(physics), 3) << " | "
+        << fixed(median(trace), 3) << " | " << fixed(median(ratio), 2) << "× | "
+        << fixed(runs.front().megabytes, 0) << " MB |\n";
     verdicts << "- `" << solver << "`: trace ÷ physics = " << against(median(ratio), 1.0) << ".\n";
   }
   out << "\npyramid:20, " << standing_steps << " steps a run, medians of " << repetitions
