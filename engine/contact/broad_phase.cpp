@@ -1,7 +1,10 @@
 #include "contact/broad_phase.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
+
+#include "parallel/workers.h"
 
 namespace lamina {
 namespace {
@@ -18,10 +21,74 @@ void insertion_sort(std::vector<int>& order, const Before& before) {
   }
 }
 
+// Horizontal bands of one height from the lowest box up. `of` never decreases as y grows, so a
+// box lies in the bands of(min.y) … of(max.y), and a height y within two boxes lies in a band
+// both of them are listed in.
+struct Bands {
+  double bottom = 0.0;
+  double height = 1.0;
+  int count = 1;
+
+  int of(double y) const {
+    const double t = (y - bottom) / height;
+    if (!(t > 0.0)) return 0;  // below the bottom, or not a number
+    if (t >= count - 1) return count - 1;
+    return static_cast<int>(t);
+  }
+};
+
+// Bands twice the median box's height, so that a typical box lies in one or two of them; never
+// more bands than boxes (a box far above the rest then widens them rather than adding empty
+// ones). One band when the heights are not finite numbers.
+Bands choose_bands(const std::vector<Aabb>& boxes, std::vector<double>& heights) {
+  Bands bands;
+  if (boxes.empty()) return bands;
+  double bottom = boxes[0].min.y();
+  double top = boxes[0].max.y();
+  heights.resize(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    bottom = std::min(bottom, boxes[i].min.y());
+    top = std::max(top, boxes[i].max.y());
+    heights[i] = boxes[i].max.y() - boxes[i].min.y();
+  }
+  const auto middle = heights.begin() + static_cast<std::ptrdiff_t>(heights.size() / 2);
+  std::nth_element(heights.begin(), middle, heights.end());
+  const double range = top - bottom;
+  const double most = static_cast<double>(boxes.size());
+  double height = 2.0 * *middle;
+  if (!(height > 0.0) || range / height > most) height = range / most;
+  if (!(height > 0.0) || !std::isfinite(height) || !std::isfinite(bottom)) return bands;
+  bands.bottom = bottom;
+  bands.height = height;
+  bands.count = static_cast<int>(std::min(range / height, most)) + 1;
+  return bands;
+}
+
+// The pairs of band `band`'s boxes [first, last) (in x order) that overlap and whose overlap's
+// bottom lies in this band, appended to `found`.
+void sweep_band(const SweepMemory& memory, const Bands& bands, int band,
+                std::vector<BodyPair>& found) {
+  const std::vector<Aabb>& banded = memory.banded;
+  const auto first = static_cast<std::size_t>(memory.band_start[band]);
+  const auto last = static_cast<std::size_t>(memory.band_start[band + 1]);
+  for (std::size_t k = first; k < last; ++k) {
+    const Aabb& box = banded[k];
+    // only the boxes starting left of this box's right edge can overlap it in x
+    for (std::size_t l = k + 1; l < last && banded[l].min.x() <= box.max.x(); ++l) {
+      // and they must overlap in y too, found in the band of the overlap's bottom only
+      if (!box.overlaps(banded[l])) continue;
+      if (bands.of(std::max(box.min.y(), banded[l].min.y())) != band) continue;
+      const int a = memory.banded_body[k];
+      const int b = memory.banded_body[l];
+      found.push_back({std::min(a, b), std::max(a, b)});
+    }
+  }
+}
+
 }  // namespace
 
 void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
-                    std::vector<BodyPair>& pairs) {
+                    std::vector<BodyPair>& pairs, Workers* workers) {
   std::vector<int>& order = memory.order;
   // 1. sort by min.x, equal edges in index order
   const auto before = [&](int a, int b) {
@@ -34,30 +101,53 @@ void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
   } else {
     insertion_sort(order, before);
   }
-  // the boxes in sweep order, side by side: a tall pile puts a whole column of boxes within each
-  // box's x-interval, and the sweep reads them one after another
-  std::vector<Aabb>& sorted = memory.sorted;
-  sorted.resize(boxes.size());
-  for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = boxes[order[k]];
-  std::vector<BodyPair>& found = memory.found;
-  found.clear();
-  for (std::size_t k = 0; k < sorted.size(); ++k) {
-    const Aabb& box = sorted[k];
-    // 2. sweep: only the bodies starting left of this box's right edge can overlap it in x
-    for (std::size_t l = k + 1; l < sorted.size() && sorted[l].min.x() <= box.max.x(); ++l) {
-      // 3. and they must overlap in y too
-      if (!box.overlaps(sorted[l])) continue;
-      found.push_back({std::min(order[k], order[l]), std::max(order[k], order[l])});
+  // 2. the boxes band by band, each band's in x order, side by side for the sweep
+  const Bands bands = choose_bands(boxes, memory.heights);
+  std::vector<int>& start = memory.band_start;
+  start.assign(static_cast<std::size_t>(bands.count) + 1, 0);
+  for (const Aabb& box : boxes) {
+    for (int b = bands.of(box.min.y()); b <= bands.of(box.max.y()); ++b) ++start[b + 1];
+  }
+  for (int b = 0; b < bands.count; ++b) start[b + 1] += start[b];
+  memory.banded.resize(static_cast<std::size_t>(start.back()));
+  memory.banded_body.resize(memory.banded.size());
+  memory.band_fill.assign(start.begin(), start.end() - 1);
+  for (const int body : order) {
+    const Aabb& box = boxes[body];
+    for (int b = bands.of(box.min.y()); b <= bands.of(box.max.y()); ++b) {
+      const int at = memory.band_fill[b]++;
+      memory.banded[at] = box;
+      memory.banded_body[at] = body;
     }
   }
+  // 3. sweep: each run takes the bands that start in its share of the listed boxes
+  const int runs = runs_on(workers);
+  memory.found_of_run.resize(static_cast<std::size_t>(runs));
+  const auto band_at = [&](std::size_t listed) {
+    return static_cast<int>(std::lower_bound(start.begin(), start.end() - 1, listed) -
+                            start.begin());
+  };
+  run_on(workers, [&](int t) {
+    const auto [first, last] = share_of(memory.banded.size(), t, runs);
+    std::vector<BodyPair>& found = memory.found_of_run[t];
+    found.clear();
+    const int end = t + 1 == runs ? bands.count : band_at(last);
+    for (int band = band_at(first); band < end; ++band) sweep_band(memory, bands, band, found);
+  });
   // 4. sorted by (first, second): counted into place by first body, then each body's few pairs
   // put in order by second
-  std::vector<int>& start = memory.first_count;
-  start.assign(boxes.size() + 1, 0);
-  for (const BodyPair& pair : found) ++start[pair.first + 1];
-  for (std::size_t b = 0; b < boxes.size(); ++b) start[b + 1] += start[b];
-  pairs.resize(found.size());
-  for (const BodyPair& pair : found) pairs[start[pair.first]++] = pair;
+  std::vector<int>& first_count = memory.first_count;
+  first_count.assign(boxes.size() + 1, 0);
+  std::size_t total = 0;
+  for (const std::vector<BodyPair>& found : memory.found_of_run) {
+    for (const BodyPair& pair : found) ++first_count[pair.first + 1];
+    total += found.size();
+  }
+  for (std::size_t b = 0; b < boxes.size(); ++b) first_count[b + 1] += first_count[b];
+  pairs.resize(total);
+  for (const std::vector<BodyPair>& found : memory.found_of_run) {
+    for (const BodyPair& pair : found) pairs[first_count[pair.first]++] = pair;
+  }
   for (std::size_t k = 1; k < pairs.size(); ++k) {
     const BodyPair pair = pairs[k];
     std::size_t l = k;

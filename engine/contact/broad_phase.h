@@ -1,11 +1,17 @@
-// Broad phase: which pairs of bodies may touch, by sort and sweep on x (beyond the text, which
-// leaves collision detection to its references [9] and [10]; docs/the-text.md).
+// Broad phase: which pairs of bodies may touch, by sort and sweep on x within bands of y (beyond
+// the text, which leaves collision detection to its references [9] and [10]; docs/the-text.md).
 //
 //   1. sort the bodies by the left edge min.x of their bounding boxes;
-//   2. sweep left to right: body i can only overlap the bodies after it whose min.x ≤ max.x of i;
-//   3. of those, keep the ones whose boxes also overlap in y.
-// The pairs come out as (first < second), sorted by first then second, so the rows built from
-// them, and so every result, do not depend on how the sort broke ties.
+//   2. cut the plane into horizontal bands about two typical boxes high and list, band by band,
+//      the boxes that reach into each (in x order: a box in two bands is listed in both);
+//   3. sweep each band left to right: box i can only overlap the boxes after it whose
+//      min.x ≤ max.x of i; of those, keep the ones whose boxes also overlap in y, in the one band
+//      that holds the bottom of their overlap (so each pair is found once).
+// The bands keep a tall pile from putting a whole column of boxes within each box's x-interval:
+// a sweep on x alone checks about n·h candidates for a pile h boxes high, the bands a few per
+// box. The pairs come out as (first < second), sorted by first then second, so the rows built
+// from them, and so every result, do not depend on the bands, the threads or how the sort broke
+// ties.
 #pragma once
 
 #include <vector>
@@ -13,6 +19,8 @@
 #include "contact/shape.h"
 
 namespace lamina {
+
+class Workers;
 
 // Two bodies that may touch, by index into the world's bodies; first < second.
 struct BodyPair {
@@ -28,17 +36,22 @@ struct BodyPair {
 // What the broad phase keeps from call to call: the bodies' order by min.x, which the next call
 // starts its sort from, and room for its working copies, so that a step allocates nothing.
 struct SweepMemory {
-  std::vector<int> order;        // body indices sorted by min.x as of the last call
-  std::vector<Aabb> sorted;      // their boxes in that order, side by side for the sweep
-  std::vector<BodyPair> found;   // the pairs in the order the sweep meets them
-  std::vector<int> first_count;  // per body, how many pairs have it first (the pairs' sort)
+  std::vector<int> order;                 // body indices sorted by min.x as of the last call
+  std::vector<double> heights;            // the boxes' heights, for their median (the bands')
+  std::vector<int> band_start;            // per band, where its boxes begin in `banded`
+  std::vector<int> band_fill;             // per band, where its next box goes while listing
+  std::vector<Aabb> banded;               // the boxes band after band, each band's in x order
+  std::vector<int> banded_body;           // the body of each of them
+  std::vector<std::vector<BodyPair>> found_of_run;  // per run of bands, the pairs it found
+  std::vector<int> first_count;           // per body, how many pairs have it first (the sort)
 };
 
 // The pairs of overlapping (or touching) boxes, sorted. `memory.order` holds the body indices
 // sorted by min.x: empty (or of another size) on the first call, then last call's order for the
 // same bodies, which an insertion sort brings up to date in about one pass when bodies move a
-// little between steps (sort and sweep's frame coherence).
+// little between steps (sort and sweep's frame coherence). With `workers`, the bands are swept
+// in one run of consecutive bands per thread (the same pairs).
 void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
-                    std::vector<BodyPair>& pairs);
+                    std::vector<BodyPair>& pairs, Workers* workers = nullptr);
 
 }  // namespace lamina

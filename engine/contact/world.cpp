@@ -147,13 +147,16 @@ void World::apply_forces() {
 void World::detect_collisions() {
   poses_.resize(bodies_.size());
   boxes_.resize(bodies_.size());
-  for (size_t i = 0; i < bodies_.size(); ++i) {
-    poses_[i] = planar_pose(bodies_[i]);
-    boxes_[i] = bounding_box(shapes_[i], poses_[i]);
-  }
-  sort_and_sweep(boxes_, sweep_memory_, candidate_pairs_);
-  // each run its share of the candidates, in order, its collisions appended in order
   const int runs = runs_on(workers_.get());
+  run_on(workers_.get(), [&](int t) {  // each run its share of the bodies
+    const auto [first, last] = share_of(bodies_.size(), t, runs);
+    for (std::size_t i = first; i < last; ++i) {
+      poses_[i] = planar_pose(bodies_[i]);
+      boxes_[i] = bounding_box(shapes_[i], poses_[i]);
+    }
+  });
+  sort_and_sweep(boxes_, sweep_memory_, candidate_pairs_, workers_.get());
+  // each run its share of the candidates, in order, its collisions appended in order
   fresh_of_thread_.resize(static_cast<std::size_t>(runs));
   run_on(workers_.get(), [&](int t) {
     const auto [first, last] = share_of(candidate_pairs_.size(), t, runs);
