@@ -174,6 +174,34 @@ TEST_SUITE("Threads") {
     }
   }
 
+  TEST_CASE("PGS swept in two lanes on one thread gives the row-by-row sweeps' λ bit for bit") {
+    // The lanes keep every body's sequence of updates, as the threads do (pgs_solver.h): λ must
+    // be identical to the plain sweep's, row after row. Recording the sweeps forces the plain
+    // sweep (it measures the residual after each), and recording never changes λ.
+    for (const int steps : {3, 60}) {
+      const StepReport step = pyramid_mlcp(steps);
+      REQUIRE(step.mlcp.row_count() >= 1000);
+      for (const int sweeps : {2, 3, 8}) {
+        for (const bool clamped : {false, true}) {
+          CAPTURE(steps);
+          CAPTURE(sweeps);
+          CAPTURE(clamped);
+          Pitfalls pitfalls;
+          if (clamped) pitfalls.add(Pitfall::clamp_increment);
+          PgsSolver row_by_row;
+          std::vector<double> expected(step.lambda_exp.data(),
+                                       step.lambda_exp.data() + step.lambda_exp.size());
+          SweepResult recorded;
+          row_by_row.solve(step.mlcp, expected.data(), {sweeps, 0.0, true}, recorded, pitfalls);
+          CHECK_FALSE(row_by_row.swept_in_lanes());
+          PgsSolver lanes;
+          CHECK(solved(lanes, step, sweeps, pitfalls) == bytes_of(expected.data(), expected.size()));
+          CHECK(lanes.swept_in_lanes());  // the lanes did sweep: the check can fail
+        }
+      }
+    }
+  }
+
   TEST_CASE("rows in no order of place are swept on one thread, to the same λ") {
     // The pyramid's boxes listed in a shuffled order: a box's rows then share bodies with rows
     // all over the order, the threads would wait at nearly every group, and the solver keeps to
@@ -189,6 +217,7 @@ TEST_SUITE("Threads") {
     PgsSolver one;
     CHECK(solved(on_threads, step, 8) == solved(one, step, 8));
     CHECK_FALSE(on_threads.swept_on_threads());
+    CHECK_FALSE(one.swept_in_lanes());  // nor in two lanes
   }
 
   TEST_CASE("a pyramid stepped on 2 and 3 threads keeps the one-thread state bit for bit") {

@@ -1,6 +1,7 @@
 #include "constraints/pgs_solver.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace lamina {
 namespace {
@@ -28,6 +29,37 @@ void pass_group(const PackedRow<N>* rows, int first, int last, Block<N>* a, doub
   }
   a[b1] = a1;
   if (b2 >= 0) a[b2] = a2;
+}
+
+// One pass over two groups at once, of different lanes and on different bodies: row j of the
+// first group, then row j of the second, each the arithmetic of pgs_row on its own group's a_b,
+// so that the two chains of arithmetic overlap (a group has one to three rows).
+template <int N, bool ClampIncrement>
+[[gnu::always_inline]] inline void pass_two_groups(const PackedRow<N>* rows, const RowGroup* group,
+                                                   int first, int second, Block<N>* a,
+                                                   double* lambda) {
+  const int b1 = rows[group[first].first].map[0];
+  const int b2 = rows[group[first].first].map[1];
+  const int c1 = rows[group[second].first].map[0];
+  const int c2 = rows[group[second].first].map[1];
+  Block<N> a1 = a[b1];
+  Block<N> a2 = b2 >= 0 ? a[b2] : Block<N>::Zero();
+  Block<N> e1 = a[c1];
+  Block<N> e2 = c2 >= 0 ? a[c2] : Block<N>::Zero();
+  int i = group[first].first;
+  int j = group[second].first;
+  const int i_end = group[first + 1].first;
+  const int j_end = group[second + 1].first;
+  for (; i < i_end && j < j_end; ++i, ++j) {
+    pgs_row<N, ClampIncrement>(rows[i], static_cast<std::size_t>(i), lambda, a1, a2);
+    pgs_row<N, ClampIncrement>(rows[j], static_cast<std::size_t>(j), lambda, e1, e2);
+  }
+  for (; i < i_end; ++i) pgs_row<N, ClampIncrement>(rows[i], static_cast<std::size_t>(i), lambda, a1, a2);
+  for (; j < j_end; ++j) pgs_row<N, ClampIncrement>(rows[j], static_cast<std::size_t>(j), lambda, e1, e2);
+  a[b1] = a1;
+  if (b2 >= 0) a[b2] = a2;
+  a[c1] = e1;
+  if (c2 >= 0) a[c2] = e2;
 }
 
 // The rows are swept on threads when each thread has a few hundred rows to sweep, and when at
@@ -66,21 +98,20 @@ void PgsSolver::use_workers(Workers* workers) {
   progress_.reset(workers_ != nullptr ? new Progress[workers_->count()] : nullptr);
 }
 
-bool PgsSolver::plan_threads(const Mlcp& mlcp) {
+bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {
   const std::vector<RowGroup>& groups = mlcp.groups();
   const int group_count = static_cast<int>(groups.size()) - 1;
-  const int threads = workers_->count();
   const long rows = mlcp.row_count();
   if (rows < threaded_min_rows || !mlcp.friction_on_own_bodies()) return false;
   // the parts: consecutive groups, each part about its share of the rows
   part_of_group_.resize(static_cast<std::size_t>(group_count));
   for (int g = 0; g < group_count; ++g) {
-    part_of_group_[g] = static_cast<int>(std::min<long>(threads - 1, groups[g].first * threads / rows));
+    part_of_group_[g] = static_cast<int>(std::min<long>(parts - 1, groups[g].first * parts / rows));
   }
-  thread_first_.resize(static_cast<std::size_t>(threads) + 1);
-  for (int t = 0, g = 0; t <= threads; ++t) {
+  part_first_.resize(static_cast<std::size_t>(parts) + 1);
+  for (int t = 0, g = 0; t <= parts; ++t) {
     while (g < group_count && part_of_group_[g] < t) ++g;
-    thread_first_[t] = g;
+    part_first_[t] = g;
   }
   // the waits: the group before g on each of its bodies, this pass's or the last of the pass
   // before, when another thread takes it
@@ -105,16 +136,16 @@ bool PgsSolver::plan_threads(const Mlcp& mlcp) {
       if (theirs == part_of_group_[g]) continue;
       waited_on_[g_before] = 1;
       ++waits;
-      if (k == 1 && wait.thread[0] == theirs) {
+      if (k == 1 && wait.part[0] == theirs) {
         wait.after[0] = std::max(wait.after[0], static_cast<long>(before) + 1);
       } else {
-        wait.thread[k] = theirs;
+        wait.part[k] = theirs;
         wait.after[k] = static_cast<long>(before) + 1;
       }
     }
   }
   // rows whose bodies are spread over the whole order (bodies added in no spatial order) would
-  // make the threads wait at every few groups: then one thread is faster
+  // make the parts wait at every few groups: then one part is faster
   return waits <= group_count / max_wait_share;
 }
 
@@ -133,8 +164,64 @@ template <int N, bool ClampIncrement>
   }
 }
 
+// All the sweeps in two lanes (plan_parts with two parts): each lane goes as far as its waits
+// allow, the lanes' counts of groups passed standing in for the threads' Progress, and each
+// step takes the next group of each lane that may go, both side by side where both can. Lane 1
+// starts once lane 0 has passed the groups its first groups share bodies with (about a pass);
+// then the two go side by side. One of the two can always go: the first of their next groups
+// in the one-thread order has every group before it on its bodies behind it.
+template <int N, bool ClampIncrement>
+[[gnu::flatten]] void PgsSolver::sweep_in_lanes(const PackedRows<N>& rows,
+                                                const std::vector<RowGroup>& groups,
+                                                std::vector<Block<N>>& a_of_body, double* lambda,
+                                                int sweeps) const {
+  const RowGroup* group = groups.data();
+  const GroupWait* waits = group_waits_.data();
+  const long group_count = static_cast<long>(groups.size()) - 1;
+  // each lane's next pass k ≥ 1 and group g, and its count k·G + g + 1 of the last group passed
+  // (pass 0, a = B λ, is done before the sweeps); an empty lane has nothing to pass
+  std::array<long, 2> pass{1, 1};
+  std::array<int, 2> next{part_first_[0], part_first_[1]};
+  std::array<long, 2> passed{part_first_[1], part_first_[2]};
+  for (int u = 0; u < 2; ++u) {
+    if (part_first_[u] == part_first_[u + 1]) pass[u] = sweeps + 1;
+  }
+  const auto may_go = [&](int u) {
+    if (pass[u] > sweeps) return false;
+    const GroupWait& wait = waits[next[u]];
+    for (int e = 0; e < 2; ++e) {
+      const int v = wait.part[e];
+      if (v >= 0 && passed[v] < pass[u] * group_count + wait.after[e]) return false;
+    }
+    return true;
+  };
+  const auto advance = [&](int u) {
+    passed[u] = pass[u] * group_count + next[u] + 1;
+    if (++next[u] == part_first_[u + 1]) {
+      next[u] = part_first_[u];
+      ++pass[u];
+    }
+  };
+  while (pass[0] <= sweeps || pass[1] <= sweeps) {
+    const bool go0 = may_go(0);
+    const bool go1 = may_go(1);
+    if (go0 && go1) {
+      pass_two_groups<N, ClampIncrement>(rows.data(), group, next[0], next[1], a_of_body.data(),
+                                         lambda);
+    } else if (go0 || go1) {
+      const int g = next[go0 ? 0 : 1];
+      pass_group<N, ClampIncrement, Pass::sweep>(rows.data(), group[g].first, group[g + 1].first,
+                                                 a_of_body.data(), lambda);
+    } else {
+      throw std::logic_error("PGS's two lanes both wait: their plan is wrong");
+    }
+    if (go0) advance(0);
+    if (go1) advance(1);
+  }
+}
+
 // On the workers' threads: a = B λ (pass 0), then `sweeps` sweeps (passes 1, 2, …), each thread
-// taking its own groups pass after pass and waiting where plan_threads found a group of another
+// taking its own groups pass after pass and waiting where plan_parts found a group of another
 // thread before one of its own. Thread t starts pass k once thread t − 1 has passed the rows its
 // first rows share bodies with: a wavefront, each part at most a pass behind the one before it.
 template <int N, bool ClampIncrement>
@@ -149,10 +236,10 @@ void PgsSolver::solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
     Progress& mine = progress_[t];
     std::array<long, 64> seen{};  // the last count read from each thread
     for (long k = 0; k <= sweeps; ++k) {
-      for (int g = thread_first_[t]; g < thread_first_[t + 1]; ++g) {
+      for (int g = part_first_[t]; g < part_first_[t + 1]; ++g) {
         const GroupWait& wait = group_waits_[g];
         for (int e = 0; e < 2; ++e) {
-          const int u = wait.thread[e];
+          const int u = wait.part[e];
           if (u < 0) continue;
           const long needed = k * group_count + wait.after[e];
           if (seen[u] < needed) seen[u] = progress_[u].wait_until(needed);
@@ -173,10 +260,12 @@ void PgsSolver::solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
 void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& settings,
                       SweepResult& result, Pitfalls pitfalls) {
   const bool measure = settings.record_sweeps || settings.tolerance > 0.0;
-  const bool threaded = workers_ != nullptr && !measure && !pitfalls.has(Pitfall::lambda_b1) &&
-                        plan_threads(mlcp);
+  const bool plain = measure || pitfalls.has(Pitfall::lambda_b1);
+  const bool threaded = workers_ != nullptr && !plain && plan_parts(mlcp, workers_->count());
+  const bool in_lanes = !threaded && !plain && settings.iterations >= 2 && plan_parts(mlcp, 2);
   const bool clamp_increment = pitfalls.has(Pitfall::clamp_increment);
   swept_on_threads_ = threaded;
+  swept_in_lanes_ = in_lanes;
   mlcp.visit([&](const auto& rows) {
     constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
     planar_ = N == 3;
@@ -195,6 +284,15 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
       transpose_multiply_text_slip(rows, mlcp.body_count(), lambda, a_of_body);
     } else {
       transpose_multiply(rows, mlcp.body_count(), lambda, a_of_body);
+    }
+    if (in_lanes) {
+      if (clamp_increment) {
+        sweep_in_lanes<N, true>(rows, mlcp.groups(), a_of_body, lambda, settings.iterations);
+      } else {
+        sweep_in_lanes<N, false>(rows, mlcp.groups(), a_of_body, lambda, settings.iterations);
+      }
+      result.iterations = settings.iterations;
+      return;
     }
     for (int iter = 0; iter < settings.iterations; ++iter) {
       if (clamp_increment) {

@@ -19,6 +19,14 @@
 // threads. Contact rows come in the order of their bodies' indices, so in a scene built bottom
 // up (a pyramid, a stack) a part shares bodies with the parts next to it only along one cut,
 // and the threads run as a wavefront, part t a little behind part t − 1.
+//
+// On one thread the same plan, with two parts, makes two lanes: the sweeps take a group of each
+// lane at once where neither waits on the other (pass_two_groups: their rows interleaved, two
+// independent chains of arithmetic that the processor overlaps), and a group alone where one
+// does. The rows of one lane still follow each other, and each group still comes after every
+// group before it on its bodies, so λ is again the one-thread λ bit for bit; a sweep is bound by
+// the latency of each row's chain (the dot product, the clamp, the update of a), and two chains
+// at once take little longer than one.
 #pragma once
 
 #include <algorithm>
@@ -80,38 +88,47 @@ class PgsSolver {
   void use_workers(Workers* workers);
   // Whether the last solve swept on the workers' threads.
   bool swept_on_threads() const { return swept_on_threads_; }
+  // Whether the last solve swept on one thread in two lanes (above).
+  bool swept_in_lanes() const { return swept_in_lanes_; }
 
  private:
-  // Where the thread of a group waits before its pass k over it, for each of its bodies whose
-  // group before it (in the one-thread order) another thread takes: until `thread` has
-  // published k·G + `after` (G groups a pass; `after` ≤ 0 for a group of the pass before).
+  // Where the part (thread or lane) of a group waits before its pass k over it, for each of its
+  // bodies whose group before it (in the one-thread order) another part takes: until `part` has
+  // passed k·G + `after` (G groups a pass; `after` ≤ 0 for a group of the pass before).
   struct GroupWait {
-    std::array<int, 2> thread{-1, -1};
+    std::array<int, 2> part{-1, -1};
     std::array<long, 2> after{0, 0};
   };
 
   template <int N>
   std::vector<Block<N>>& a();
-  bool plan_threads(const Mlcp& mlcp);  // the parts and their waits; false: one thread is better
+  // The rows' groups cut into `parts` parts and the waits between them; false when they would
+  // wait too often (then one thread and one lane are faster).
+  bool plan_parts(const Mlcp& mlcp, int parts);
   template <int N, bool ClampIncrement>
   void sweep(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
              std::vector<Block<N>>& a_of_body, double* lambda) const;
+  template <int N, bool ClampIncrement>
+  void sweep_in_lanes(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
+                      std::vector<Block<N>>& a_of_body, double* lambda, int sweeps) const;
   template <int N, bool ClampIncrement>
   void solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
                         std::vector<Block<N>>& a_of_body, double* lambda, int sweeps);
 
   bool planar_ = true;                 // the layout of the last solve
   bool swept_on_threads_ = false;      // how the last solve swept
+  bool swept_in_lanes_ = false;
   std::vector<Block<3>> planar_a_;     // a in the planar layout
   std::vector<Block<6>> general_a_;    // a in the general layout
-  // On threads: thread t takes the groups (Mlcp::groups) [thread_first_[t], thread_first_[t + 1]).
+  // Part t (a thread, or a lane) takes the groups (Mlcp::groups) [part_first_[t],
+  // part_first_[t + 1]).
   Workers* workers_ = nullptr;            // the threads, or none
   std::unique_ptr<Progress[]> progress_;  // per thread: k·G + g + 1 once its pass k took group g
-  std::vector<int> thread_first_;
-  std::vector<int> part_of_group_;        // the thread that sweeps group g
+  std::vector<int> part_first_;
+  std::vector<int> part_of_group_;        // the part that sweeps group g
   std::vector<GroupWait> group_waits_;    // where group g waits
   std::vector<unsigned char> waited_on_;  // another thread waits for group g: publish it
-  std::vector<int> last_group_of_body_;   // scratch of plan_threads
+  std::vector<int> last_group_of_body_;   // scratch of plan_parts
 };
 
 // Solves the MLCP from the guess λ_exp (warm start) in a solver of its own; a caller solving
