@@ -62,9 +62,10 @@ template <int N, bool ClampIncrement>
   if (c2 >= 0) a[c2] = e2;
 }
 
-// The rows are swept on threads when each thread has a few hundred rows to sweep, and when at
-// most one group in max_wait_share waits on another thread (a pyramid of base 20 on 3 threads:
-// one in 10); otherwise the threads would mostly wait on each other.
+// The rows are swept in parts (threads, lanes) when there are a few hundred rows, and when for
+// each cut between two parts at most one group in max_wait_share waits on another part (a
+// pyramid of base 20 in 2 parts: one in 20); otherwise the parts would mostly wait on each
+// other.
 constexpr int threaded_min_rows = 512;
 constexpr int max_wait_share = 8;
 
@@ -95,7 +96,7 @@ void PgsSolver::use_workers(Workers* workers) {
   if (workers == nullptr || workers->count() < 2) workers = nullptr;
   if (workers == workers_) return;
   workers_ = workers;
-  progress_.reset(workers_ != nullptr ? new Progress[workers_->count()] : nullptr);
+  progress_.reset(workers_ != nullptr ? new Progress[2 * workers_->count()] : nullptr);  // a part
 }
 
 bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {
@@ -146,7 +147,7 @@ bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {
   }
   // rows whose bodies are spread over the whole order (bodies added in no spatial order) would
   // make the parts wait at every few groups: then one part is faster
-  return waits <= group_count / max_wait_share;
+  return waits <= static_cast<long>(parts - 1) * group_count / max_wait_share;
 }
 
 // One Gauss-Seidel sweep over the rows, each λ_i projected onto its bounds, group by group.
@@ -164,96 +165,109 @@ template <int N, bool ClampIncrement>
   }
 }
 
-// All the sweeps in two lanes (plan_parts with two parts): each lane goes as far as its waits
-// allow, the lanes' counts of groups passed standing in for the threads' Progress, and each
-// step takes the next group of each lane that may go, both side by side where both can. Lane 1
-// starts once lane 0 has passed the groups its first groups share bodies with (about a pass);
-// then the two go side by side. One of the two can always go: the first of their next groups
-// in the one-thread order has every group before it on its bodies behind it.
+// Passes `first_pass` to `sweeps` over the groups of parts 2t and 2t + 1, taken as two lanes
+// (pass 0 is a = B λ, passes 1, 2, … the sweeps). Each lane goes as far as its waits allow: on
+// the other lane, through the lanes' own counts of groups passed; on another thread's part,
+// through that part's Progress. Each step takes the next group of each lane that may go, both
+// side by side where both can (pass_two_groups). Lane 2t + 1 starts once the groups its first
+// groups share bodies with have been passed (about a pass of the part before it), then the two
+// go side by side. Some lane can always go, or will once another thread has got further: the
+// first of all the parts' next groups in the one-thread order has every group before it on its
+// bodies behind it.
 template <int N, bool ClampIncrement>
 [[gnu::flatten]] void PgsSolver::sweep_in_lanes(const PackedRows<N>& rows,
                                                 const std::vector<RowGroup>& groups,
-                                                std::vector<Block<N>>& a_of_body, double* lambda,
-                                                int sweeps) const {
+                                                Block<N>* a, double* lambda, int t,
+                                                long first_pass, int sweeps) const {
   const RowGroup* group = groups.data();
   const GroupWait* waits = group_waits_.data();
   const long group_count = static_cast<long>(groups.size()) - 1;
-  // each lane's next pass k ≥ 1 and group g, and its count k·G + g + 1 of the last group passed
-  // (pass 0, a = B λ, is done before the sweeps); an empty lane has nothing to pass
-  std::array<long, 2> pass{1, 1};
-  std::array<int, 2> next{part_first_[0], part_first_[1]};
-  std::array<long, 2> passed{part_first_[1], part_first_[2]};
+  // each lane's part, its next pass k and group g, and its count k·G + g + 1 of the last group
+  // passed (when the first pass is a sweep, pass 0 was done before); an empty lane is done
+  const std::array<int, 2> part{2 * t, 2 * t + 1};
+  std::array<long, 2> pass{first_pass, first_pass};
+  std::array<int, 2> next{};
+  std::array<long, 2> passed{};
   for (int u = 0; u < 2; ++u) {
-    if (part_first_[u] == part_first_[u + 1]) pass[u] = sweeps + 1;
+    next[u] = part_first_[part[u]];
+    passed[u] = (first_pass - 1) * group_count + part_first_[part[u] + 1];
+    if (part_first_[part[u]] == part_first_[part[u] + 1]) pass[u] = sweeps + 1;
   }
-  const auto may_go = [&](int u) {
-    if (pass[u] > sweeps) return false;
+  std::array<long, 128> seen{};  // the last count read from each other part (64 threads at most)
+  // 0: lane u's next group may go; else the part it waits for (+ 1), with the count needed
+  const auto waits_for = [&](int u, long& needed) {
+    if (pass[u] > sweeps) return -1;
     const GroupWait& wait = waits[next[u]];
     for (int e = 0; e < 2; ++e) {
       const int v = wait.part[e];
-      if (v >= 0 && passed[v] < pass[u] * group_count + wait.after[e]) return false;
+      if (v < 0) continue;
+      needed = pass[u] * group_count + wait.after[e];
+      if (v / 2 == t) {
+        if (passed[v % 2] < needed) return v + 1;
+      } else if (seen[v] < needed) {
+        seen[v] = progress_[v].value();
+        if (seen[v] < needed) return v + 1;
+      }
     }
-    return true;
+    return 0;
+  };
+  const auto take = [&](int u) {  // lane u's next group, alone
+    const int g = next[u];
+    if (pass[u] == 0) {
+      pass_group<N, ClampIncrement, Pass::transpose>(rows.data(), group[g].first,
+                                                     group[g + 1].first, a, lambda);
+    } else {
+      pass_group<N, ClampIncrement, Pass::sweep>(rows.data(), group[g].first, group[g + 1].first,
+                                                 a, lambda);
+    }
   };
   const auto advance = [&](int u) {
     passed[u] = pass[u] * group_count + next[u] + 1;
-    if (++next[u] == part_first_[u + 1]) {
-      next[u] = part_first_[u];
+    if (progress_ != nullptr && waited_on_[next[u]]) progress_[part[u]].publish(passed[u]);
+    if (++next[u] == part_first_[part[u] + 1]) {
+      next[u] = part_first_[part[u]];
       ++pass[u];
     }
   };
   while (pass[0] <= sweeps || pass[1] <= sweeps) {
-    const bool go0 = may_go(0);
-    const bool go1 = may_go(1);
-    if (go0 && go1) {
-      pass_two_groups<N, ClampIncrement>(rows.data(), group, next[0], next[1], a_of_body.data(),
-                                         lambda);
+    long needed0 = 0;
+    long needed1 = 0;
+    const int wait0 = waits_for(0, needed0);
+    const int wait1 = waits_for(1, needed1);
+    const bool go0 = wait0 == 0;
+    const bool go1 = wait1 == 0;
+    if (go0 && go1 && pass[0] > 0 && pass[1] > 0) {
+      pass_two_groups<N, ClampIncrement>(rows.data(), group, next[0], next[1], a, lambda);
     } else if (go0 || go1) {
-      const int g = next[go0 ? 0 : 1];
-      pass_group<N, ClampIncrement, Pass::sweep>(rows.data(), group[g].first, group[g + 1].first,
-                                                 a_of_body.data(), lambda);
+      if (go0) take(0);
+      if (go1) take(1);
     } else {
-      throw std::logic_error("PGS's two lanes both wait: their plan is wrong");
+      // both wait: for another thread's part (the other lane's own wait is then behind it)
+      const int v = (wait0 > 0 && (wait0 - 1) / 2 != t) ? wait0 - 1 : wait1 - 1;
+      const long needed = v == wait0 - 1 ? needed0 : needed1;
+      if (v < 0 || v / 2 == t || progress_ == nullptr) {
+        throw std::logic_error("PGS's two lanes both wait on each other: their plan is wrong");
+      }
+      seen[v] = progress_[v].wait_until(needed);
+      continue;
     }
     if (go0) advance(0);
     if (go1) advance(1);
   }
 }
 
-// On the workers' threads: a = B λ (pass 0), then `sweeps` sweeps (passes 1, 2, …), each thread
-// taking its own groups pass after pass and waiting where plan_parts found a group of another
-// thread before one of its own. Thread t starts pass k once thread t − 1 has passed the rows its
-// first rows share bodies with: a wavefront, each part at most a pass behind the one before it.
+// On the workers' threads: a = B λ (pass 0), then `sweeps` sweeps (passes 1, 2, …), thread t
+// taking parts 2t and 2t + 1 as two lanes (sweep_in_lanes), pass after pass, and waiting where
+// plan_parts found a group of another thread's part before one of its own. Thread t starts
+// pass k once the part before its first has passed the rows its first rows share bodies with:
+// a wavefront, each part at most a pass behind the one before it.
 template <int N, bool ClampIncrement>
 void PgsSolver::solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
                                  std::vector<Block<N>>& a_of_body, double* lambda, int sweeps) {
-  const std::vector<RowGroup>& groups = mlcp.groups();
-  const int threads = workers_->count();
-  const long group_count = static_cast<long>(groups.size()) - 1;
   a_of_body.assign(static_cast<std::size_t>(mlcp.body_count()), Block<N>::Zero());
-  for (int t = 0; t < threads; ++t) progress_[t].reset();
+  for (int p = 0; p < 2 * workers_->count(); ++p) progress_[p].reset();
   workers_->run([&](int t) {
-    Progress& mine = progress_[t];
-    std::array<long, 64> seen{};  // the last count read from each thread
-    for (long k = 0; k <= sweeps; ++k) {
-      for (int g = part_first_[t]; g < part_first_[t + 1]; ++g) {
-        const GroupWait& wait = group_waits_[g];
-        for (int e = 0; e < 2; ++e) {
-          const int u = wait.part[e];
-          if (u < 0) continue;
-          const long needed = k * group_count + wait.after[e];
-          if (seen[u] < needed) seen[u] = progress_[u].wait_until(needed);
-        }
-        if (k == 0) {
-          pass_group<N, ClampIncrement, Pass::transpose>(rows.data(), groups[g].first,
-                                                         groups[g + 1].first, a_of_body.data(), lambda);
-        } else {
-          pass_group<N, ClampIncrement, Pass::sweep>(rows.data(), groups[g].first,
-                                                     groups[g + 1].first, a_of_body.data(), lambda);
-        }
-        if (waited_on_[g]) mine.publish(k * group_count + g + 1);
-      }
-    }
+    sweep_in_lanes<N, ClampIncrement>(rows, mlcp.groups(), a_of_body.data(), lambda, t, 0, sweeps);
   });
 }
 
@@ -261,7 +275,7 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
                       SweepResult& result, Pitfalls pitfalls) {
   const bool measure = settings.record_sweeps || settings.tolerance > 0.0;
   const bool plain = measure || pitfalls.has(Pitfall::lambda_b1);
-  const bool threaded = workers_ != nullptr && !plain && plan_parts(mlcp, workers_->count());
+  const bool threaded = workers_ != nullptr && !plain && plan_parts(mlcp, 2 * workers_->count());
   const bool in_lanes = !threaded && !plain && settings.iterations >= 2 && plan_parts(mlcp, 2);
   const bool clamp_increment = pitfalls.has(Pitfall::clamp_increment);
   swept_on_threads_ = threaded;
@@ -287,9 +301,11 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
     }
     if (in_lanes) {
       if (clamp_increment) {
-        sweep_in_lanes<N, true>(rows, mlcp.groups(), a_of_body, lambda, settings.iterations);
+        sweep_in_lanes<N, true>(rows, mlcp.groups(), a_of_body.data(), lambda, 0, 1,
+                                 settings.iterations);
       } else {
-        sweep_in_lanes<N, false>(rows, mlcp.groups(), a_of_body, lambda, settings.iterations);
+        sweep_in_lanes<N, false>(rows, mlcp.groups(), a_of_body.data(), lambda, 0, 1,
+                                 settings.iterations);
       }
       result.iterations = settings.iterations;
       return;

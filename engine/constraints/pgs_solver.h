@@ -10,23 +10,23 @@
 // The text's pseudo-code with its two faults mended: TransposeMultiply scales by λ[i] (the text
 // writes λ[b1], λ[b2]), and a one-body row (Jmap[1] = −1) never reads a[−1].
 //
-// On more than one thread (use_workers) the rows are cut into as many parts as threads, each a
-// run of consecutive rows, and each thread sweeps its part, sweep after sweep. A row waits only
+// On more than one thread (use_workers) the rows are cut into two parts a thread, each a run of
+// consecutive rows, and thread t sweeps parts 2t and 2t + 1, sweep after sweep. A row waits only
 // where the row before it on one of its bodies, in the one-thread order (this sweep's, or the
-// sweep before's), belongs to another part: until that part's thread has swept it. So every
-// a_b a row reads holds the value it holds in the one-thread order, and so does every λ (a
-// friction row's contact rows are on its bodies): λ is the same bit for bit on any number of
-// threads. Contact rows come in the order of their bodies' indices, so in a scene built bottom
-// up (a pyramid, a stack) a part shares bodies with the parts next to it only along one cut,
-// and the threads run as a wavefront, part t a little behind part t − 1.
+// sweep before's), belongs to another part: until that part has swept it (its own thread's other
+// part, or another thread's). So every a_b a row reads holds the value it holds in the
+// one-thread order, and so does every λ (a friction row's contact rows are on its bodies): λ is
+// the same bit for bit on any number of threads. Contact rows come in the order of their bodies'
+// indices, so in a scene built bottom up (a pyramid, a stack) a part shares bodies with the parts
+// next to it only along one cut, and the parts run as a wavefront, part p a little behind p − 1.
 //
-// On one thread the same plan, with two parts, makes two lanes: the sweeps take a group of each
-// lane at once where neither waits on the other (pass_two_groups: their rows interleaved, two
-// independent chains of arithmetic that the processor overlaps), and a group alone where one
-// does. The rows of one lane still follow each other, and each group still comes after every
-// group before it on its bodies, so λ is again the one-thread λ bit for bit; a sweep is bound by
-// the latency of each row's chain (the dot product, the clamp, the update of a), and two chains
-// at once take little longer than one.
+// A thread's two parts are two lanes: its sweeps take a group of each lane at once where neither
+// waits on the other (pass_two_groups: their rows interleaved, two independent chains of
+// arithmetic that the processor overlaps), and a group alone where one does. On one thread the
+// same plan with two parts gives the one thread two lanes. The rows of one lane still follow each
+// other, and each group still comes after every group before it on its bodies, so λ is again the
+// one-thread λ bit for bit; a sweep is bound by the latency of each row's chain (the dot product,
+// the clamp, the update of a), and two chains at once take little longer than one.
 #pragma once
 
 #include <algorithm>
@@ -109,8 +109,8 @@ class PgsSolver {
   void sweep(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
              std::vector<Block<N>>& a_of_body, double* lambda) const;
   template <int N, bool ClampIncrement>
-  void sweep_in_lanes(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
-                      std::vector<Block<N>>& a_of_body, double* lambda, int sweeps) const;
+  void sweep_in_lanes(const PackedRows<N>& rows, const std::vector<RowGroup>& groups, Block<N>* a,
+                      double* lambda, int t, long first_pass, int sweeps) const;
   template <int N, bool ClampIncrement>
   void solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
                         std::vector<Block<N>>& a_of_body, double* lambda, int sweeps);
@@ -123,11 +123,11 @@ class PgsSolver {
   // Part t (a thread, or a lane) takes the groups (Mlcp::groups) [part_first_[t],
   // part_first_[t + 1]).
   Workers* workers_ = nullptr;            // the threads, or none
-  std::unique_ptr<Progress[]> progress_;  // per thread: k·G + g + 1 once its pass k took group g
+  std::unique_ptr<Progress[]> progress_;  // per part: k·G + g + 1 once its pass k took group g
   std::vector<int> part_first_;
   std::vector<int> part_of_group_;        // the part that sweeps group g
   std::vector<GroupWait> group_waits_;    // where group g waits
-  std::vector<unsigned char> waited_on_;  // another thread waits for group g: publish it
+  std::vector<unsigned char> waited_on_;  // another part waits for group g: publish it
   std::vector<int> last_group_of_body_;   // scratch of plan_parts
 };
 

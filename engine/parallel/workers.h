@@ -95,6 +95,8 @@ class alignas(64) Progress {
  public:
   void reset() { value_.store(0, std::memory_order_relaxed); }
   void publish(long value) { value_.store(value, std::memory_order_release); }
+  // The count now (acquire: what was written before it was published is seen).
+  long value() const { return value_.load(std::memory_order_acquire); }
   // Waits until the count is at least `at_least` (spinning, then yielding the core to other
   // threads when the wait is long) and returns the count seen.
   long wait_until(long at_least) const;
