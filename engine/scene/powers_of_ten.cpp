@@ -1,5 +1,6 @@
 #include "scene/powers_of_ten.h"
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -72,69 +73,67 @@ ScaledPower scaled_power(const BigNumber& n, int shift) {
   return g;
 }
 
-using ScaledPowers = std::array<ScaledPower, scaled_k_max - scaled_k_min + 1>;
+// Both methods' tables: their powers of ten of 1 and above from one run of 10^n upwards, and
+// those below 1 from one run of ⌊2^quotient_top / 10^n⌋ downwards.
+struct PowerTables {
+  std::array<ScaledPower, scaled_k_max - scaled_k_min + 1> scaled{};  // g(k) at [k − scaled_k_min]
+  std::array<WidePower, wide_k_max - wide_k_min + 1> wide{};          // φ(k) at [k − wide_k_min]
+};
 
-// The powers of ten below 1 of both tables come from ⌊2^quotient_top / 10^n⌋, divided down by
-// 10 one n at a time: bits enough for the smallest, 10^−292 (about 2^−970), and 128 more.
+// The quotients are divided down from 2^quotient_top: bits enough for the smallest power, 10^−292
+// (about 2^−970), and 128 more.
 constexpr int quotient_top = 1152;
 
-ScaledPowers make_scaled_powers() {
-  ScaledPowers table{};
-  // k ≤ 0: 10^−k is an integer, g(k) − 1 its bits from ⌊log2 10^−k⌋ − 125 up.
+PowerTables make_power_tables() {
+  PowerTables tables;
+  // 10^n, n ≥ 0: Schubfach's k = −n, g(k) − 1 the bits of 10^−k from ⌊log2 10^−k⌋ − 125 up;
+  // Dragonbox's k = n, φ(k) the bits of 10^k from ⌊log2 10^k⌋ − 127 up, rounded up when bits
+  // below are cut off
   BigNumber power_of_ten({1});
-  for (int k = 0; k >= scaled_k_min; --k) {
-    table[static_cast<std::size_t>(k - scaled_k_min)] = scaled_power(power_of_ten, floor_log2_pow10(-k) - 125);
+  for (int n = 0; n <= std::max(-scaled_k_min, wide_k_max); ++n) {
+    if (-n >= scaled_k_min) {
+      tables.scaled[static_cast<std::size_t>(-n - scaled_k_min)] =
+          scaled_power(power_of_ten, floor_log2_pow10(n) - 125);
+    }
+    if (n <= wide_k_max) {
+      const int from = floor_log2_pow10(n) - 127;
+      WidePower phi{power_of_ten.bits(from + 64, 64), power_of_ten.bits(from, 64)};
+      if (from > 0 && power_of_ten.any_below(from) && ++phi.low == 0) ++phi.high;
+      tables.wide[static_cast<std::size_t>(n - wide_k_min)] = phi;
+    }
     power_of_ten.multiply(10);
   }
-  // k > 0: ⌊2^m / 10^k⌋ = ⌊⌊2^top / 10^k⌋ / 2^(top − m)⌋, the inner floor divided down by 10
-  // one k at a time (⌊⌊x/a⌋/b⌋ = ⌊x/(ab)⌋ for integers); m = 125 − ⌊log2 10^−k⌋ ≤ 1096 < top
-  // (top = quotient_top).
+  // ⌊2^quotient_top / 10^n⌋, n ≥ 1, divided down by 10 one n at a time (⌊⌊x/a⌋/b⌋ = ⌊x/(ab)⌋
+  // for integers). Schubfach's k = n: ⌊2^m / 10^k⌋ = ⌊⌊2^top / 10^k⌋ / 2^(top − m)⌋ with
+  // m = 125 − ⌊log2 10^−k⌋ ≤ 1096 < top. Dragonbox's k = −n: φ(k) = ⌊2^(127 − ⌊log2 10^k⌋) /
+  // 10^−k⌋ + 1 (never a whole number: 5^−k divides no power of 2).
   BigNumber quotient = BigNumber::power_of_two(quotient_top);
-  for (int k = 1; k <= scaled_k_max; ++k) {
+  for (int n = 1; n <= std::max(scaled_k_max, -wide_k_min); ++n) {
     quotient.divide(10);
-    const int m = 125 - floor_log2_pow10(-k);
-    table[static_cast<std::size_t>(k - scaled_k_min)] = scaled_power(quotient, quotient_top - m);
+    if (n <= scaled_k_max) {
+      const int m = 125 - floor_log2_pow10(-n);
+      tables.scaled[static_cast<std::size_t>(n - scaled_k_min)] =
+          scaled_power(quotient, quotient_top - m);
+    }
+    if (-n >= wide_k_min) {
+      const int from = quotient_top - 127 + floor_log2_pow10(-n);
+      WidePower phi{quotient.bits(from + 64, 64), quotient.bits(from, 64)};
+      if (++phi.low == 0) ++phi.high;
+      tables.wide[static_cast<std::size_t>(-n - wide_k_min)] = phi;
+    }
   }
-  return table;
+  return tables;
 }
 
-
-using WidePowers = std::array<WidePower, wide_k_max - wide_k_min + 1>;
-
-WidePowers make_wide_powers() {
-  WidePowers table{};
-  // k ≥ 0: 10^k's bits from ⌊log2 10^k⌋ − 127 up, rounded up when bits below are cut off
-  BigNumber power_of_ten({1});
-  for (int k = 0; k <= wide_k_max; ++k) {
-    const int from = floor_log2_pow10(k) - 127;
-    WidePower phi{power_of_ten.bits(from + 64, 64), power_of_ten.bits(from, 64)};
-    if (from > 0 && power_of_ten.any_below(from) && ++phi.low == 0) ++phi.high;
-    table[static_cast<std::size_t>(k - wide_k_min)] = phi;
-    power_of_ten.multiply(10);
-  }
-  // k < 0: ⌊2^(127 − ⌊log2 10^k⌋) / 10^−k⌋ + 1 (never a whole number: 5^−k divides no power
-  // of 2), from ⌊2^quotient_top / 10^−k⌋ as for g(k)
-  BigNumber quotient = BigNumber::power_of_two(quotient_top);
-  for (int k = -1; k >= wide_k_min; --k) {
-    quotient.divide(10);
-    const int from = quotient_top - 127 + floor_log2_pow10(k);
-    WidePower phi{quotient.bits(from + 64, 64), quotient.bits(from, 64)};
-    if (++phi.low == 0) ++phi.high;
-    table[static_cast<std::size_t>(k - wide_k_min)] = phi;
-  }
-  return table;
+const PowerTables& power_tables() {
+  static const PowerTables tables = make_power_tables();
+  return tables;
 }
 
 }  // namespace
 
-const ScaledPower* scaled_powers() {
-  static const ScaledPowers table = make_scaled_powers();
-  return table.data();
-}
+const ScaledPower* scaled_powers() { return power_tables().scaled.data(); }
 
-const WidePower* wide_powers() {
-  static const WidePowers table = make_wide_powers();
-  return table.data();
-}
+const WidePower* wide_powers() { return power_tables().wide.data(); }
 
 }  // namespace lamina
