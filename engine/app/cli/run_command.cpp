@@ -2,6 +2,7 @@
 
 #include <iostream>
 #include <memory>
+#include <thread>
 
 #include "app/cli/exit_codes.h"
 #include "app/cli/frame_recording.h"
@@ -30,6 +31,16 @@ WorldSettings run_settings(const RunOptions& o, Scene& scene) {
   settings.cache.enabled = !o.no_cache;
   settings.threads = o.threads;
   return settings;
+}
+
+// More threads than the machine's cores take the same steps, far slower: a step's threads wait
+// for each other spinning, and a thread without a core keeps the others waiting for its turn
+// (docs/performance.md, "Two threads"). Said on stderr; the run goes on.
+void note_threads_beyond_cores(int threads) {
+  const unsigned cores = std::thread::hardware_concurrency();  // 0: not known
+  if (cores == 0 || static_cast<unsigned>(threads) <= cores) return;
+  std::cerr << "lamina: note: --threads " << threads << " on a machine of " << cores
+            << " cores is slower than --threads " << cores << " (the same state bit for bit)\n";
 }
 
 // Steps 0 .. K − 1, then step K with its report, printed as the tutorials print theirs.
@@ -208,6 +219,7 @@ void run_scene(Scene scene, const RunOptions& o) {
   // the scene file's language, unless --lang said (the option set it as it was read)
   if (!o.render.language && !scene.lang.empty()) set_language(*language_named(scene.lang));
   const WorldSettings settings = run_settings(o, scene);
+  note_threads_beyond_cores(settings.threads);
   const long steps = o.steps.value_or(scene.steps);
   if (!o.allow_large) {
     const long frames = o.explain ? 0
