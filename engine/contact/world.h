@@ -47,8 +47,10 @@ struct WorldSettings {
   CacheSettings cache;                  // the contact cache on or off, and its margins
   // Makes the method that takes steps 5–7 (step_method.h); empty: the World's own PGS step.
   std::function<std::unique_ptr<StepMethod>()> method;
-  // Threads that take each step, 1 to 64: the narrow phase split between them, PGS's sweeps a
-  // pipeline (pgs_solver.h). Any number gives the same state bit for bit; only the time differs.
+  // Threads that take each step, 1 to 64: collision, the contact cache, the rows, the MLCP's
+  // packing and the integration split between them, PGS's sweeps a pipeline (pgs_solver.h). Any
+  // number gives the same state bit for bit; only the time differs (more threads than cores:
+  // far slower, docs/performance.md).
   int threads = 1;
 };
 

@@ -51,9 +51,10 @@ void add_run_options(CLI::App& run, RunOptions& o, std::string& explain_format) 
       ->type_name("B")->check(range_of(scene_limits::beta));
   run.add_flag("--no-cache", o.no_cache, "solve without the contact cache (no warm start, Fig 4-2..4-5)");
   run.add_option("--threads", o.threads,
-                 "threads that take each step: the narrow phase split between them, PGS's sweeps "
-                 "a pipeline; the same state, trace and frames bit for bit on any number, only "
-                 "faster (docs/performance.md)")
+                 "threads that take each step: collision, the contact cache, the rows and the "
+                 "integration split between them, PGS's sweeps a pipeline; the same state, trace "
+                 "and frames bit for bit on any number, only faster up to the machine's cores "
+                 "(docs/performance.md)")
       ->type_name("N")->check(CLI::Range(1, 64))->capture_default_str();
   run.add_flag("--allow-large", o.allow_large,
                "run a scene past the work limits (more than 5e7 body-steps, 1e5 overlapping pairs "
