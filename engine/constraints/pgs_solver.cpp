@@ -194,14 +194,14 @@ template <int N, bool ClampIncrement>
     if (part_first_[part[u]] == part_first_[part[u] + 1]) pass[u] = sweeps + 1;
   }
   std::array<long, 128> seen{};  // the last count read from each other part (64 threads at most)
-  // 0: lane u's next group may go; else the part it waits for (+ 1), with the count needed
-  const auto waits_for = [&](int u, long& needed) {
+  // 0: lane u's next group may go; −1: the lane is done; else the part it waits for, + 1
+  const auto waits_for = [&](int u) {
     if (pass[u] > sweeps) return -1;
     const GroupWait& wait = waits[next[u]];
     for (int e = 0; e < 2; ++e) {
       const int v = wait.part[e];
       if (v < 0) continue;
-      needed = pass[u] * group_count + wait.after[e];
+      const long needed = pass[u] * group_count + wait.after[e];
       if (v / 2 == t) {
         if (passed[v % 2] < needed) return v + 1;
       } else if (seen[v] < needed) {
@@ -229,11 +229,10 @@ template <int N, bool ClampIncrement>
       ++pass[u];
     }
   };
+  int waiting_turns = 0;  // looks in a row at two lanes that both wait
   while (pass[0] <= sweeps || pass[1] <= sweeps) {
-    long needed0 = 0;
-    long needed1 = 0;
-    const int wait0 = waits_for(0, needed0);
-    const int wait1 = waits_for(1, needed1);
+    const int wait0 = waits_for(0);
+    const int wait1 = waits_for(1);
     const bool go0 = wait0 == 0;
     const bool go1 = wait1 == 0;
     if (go0 && go1 && pass[0] > 0 && pass[1] > 0) {
@@ -242,15 +241,18 @@ template <int N, bool ClampIncrement>
       if (go0) take(0);
       if (go1) take(1);
     } else {
-      // both wait: for another thread's part (the other lane's own wait is then behind it)
-      const int v = (wait0 > 0 && (wait0 - 1) / 2 != t) ? wait0 - 1 : wait1 - 1;
-      const long needed = v == wait0 - 1 ? needed0 : needed1;
-      if (v < 0 || v / 2 == t || progress_ == nullptr) {
+      // both wait, one at least on another thread's part (else the plan is wrong): look at
+      // both again after a moment. Not waiting on that part alone: it may be waiting, in turn,
+      // on this thread's other lane, which is free to go once its own wait is over.
+      const auto other_thread = [t](int wait) { return wait > 0 && (wait - 1) / 2 != t; };
+      const bool on_other_thread = other_thread(wait0) || other_thread(wait1);
+      if (!on_other_thread || progress_ == nullptr) {
         throw std::logic_error("PGS's two lanes both wait on each other: their plan is wrong");
       }
-      seen[v] = progress_[v].wait_until(needed);
+      wait_a_turn(waiting_turns++);
       continue;
     }
+    waiting_turns = 0;
     if (go0) advance(0);
     if (go1) advance(1);
   }
