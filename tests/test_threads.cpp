@@ -155,7 +155,7 @@ TEST_SUITE("Threads") {
         }
       } else {
         for (long i = 0; i < static_cast<long>(data.size()); ++i) {
-          progress.wait_until(i + 1);
+          for (int turns = 0; progress.value() < i + 1;) wait_a_turn(turns);
           if (data[static_cast<std::size_t>(i)] != i) ++mismatches;
         }
       }

@@ -140,21 +140,14 @@ std::pair<std::size_t, std::size_t> share_of(std::size_t count, int part, int pa
   return {first, first + base + (k < longer ? 1 : 0)};
 }
 
-void wait_a_turn(int turns) {
-  if (turns < 4096) {
+void wait_a_turn(int& turns) {
+  constexpr int pauses = 4096;
+  if (turns < pauses) {
     cpu_pause();
+    ++turns;
   } else {
     std::this_thread::yield();
   }
-}
-
-long Progress::wait_until(long at_least) const {
-  long value = value_.load(std::memory_order_acquire);
-  for (int turns = 0; value < at_least; ++turns) {
-    wait_a_turn(turns);
-    value = value_.load(std::memory_order_acquire);
-  }
-  return value;
 }
 
 }  // namespace lamina

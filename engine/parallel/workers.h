@@ -97,17 +97,15 @@ class alignas(64) Progress {
   void publish(long value) { value_.store(value, std::memory_order_release); }
   // The count now (acquire: what was written before it was published is seen).
   long value() const { return value_.load(std::memory_order_acquire); }
-  // Waits until the count is at least `at_least` (wait_a_turn after each look) and returns the
-  // count seen.
-  long wait_until(long at_least) const;
 
  private:
   std::atomic<long> value_{0};
 };
 
-// Turn `turns` (0, 1, …) of a wait that looks again after each: a pause of the core for the
-// first few thousand turns, then the core yielded to other threads (the thread waited on may
-// have lost its core on a busy machine).
-void wait_a_turn(int turns);
+// One turn of a wait that looks again after each (a Progress's value, or several): a pause of
+// the core for the first few thousand turns, then the core yielded to other threads (the thread
+// waited on may have lost its core on a busy machine). `turns` counts the turns, from 0, and
+// stops counting once they yield.
+void wait_a_turn(int& turns);
 
 }  // namespace lamina
