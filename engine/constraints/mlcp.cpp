@@ -111,13 +111,17 @@ Vec6 external_force_of(const RigidBody& body) {
 }
 
 void unconstrained_velocities(const std::vector<RigidBody>& bodies, double dt,
-                              std::vector<Vec6>& out) {
+                              std::vector<Vec6>& out, Workers* workers) {
   out.resize(bodies.size());
-  for (size_t b = 0; b < bodies.size(); ++b) {
-    // eq. 3-16: V/Δt + M⁻¹ F_ext, the bracket of η, body by body
-    out[b] = velocity_of(bodies[b]) / dt +
-             inverse_mass_times(bodies[b], external_force_of(bodies[b]));
-  }
+  const int runs = runs_on(workers);
+  run_on(workers, [&](int t) {
+    const auto [first, last] = share_of(bodies.size(), t, runs);
+    for (size_t b = first; b < last; ++b) {
+      // eq. 3-16: V/Δt + M⁻¹ F_ext, the bracket of η, body by body
+      out[b] = velocity_of(bodies[b]) / dt +
+               inverse_mass_times(bodies[b], external_force_of(bodies[b]));
+    }
+  });
 }
 
 double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodies) {
@@ -187,7 +191,9 @@ void Mlcp::assemble(const std::vector<RigidBody>& bodies, const std::vector<Cons
   });
 }
 
-void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows, Workers* workers) {
+template <class Finish>
+void Mlcp::select_rows(const Mlcp& from, const std::vector<int>& rows, Workers* workers,
+                       Finish&& finish) {
   planar_ = from.planar_;
   body_count_ = from.body_count_;
   auto select = [&](const auto& source, auto& packed) {
@@ -204,6 +210,7 @@ void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows, Worke
         assert(at != rows.end() && *at == row.friction_of);
         packed[i].friction_of = static_cast<int>(at - rows.begin());
       }
+      finish(packed[i], i);
       return on_own_bodies(row.map, row.friction_of, row.friction_count,
                            static_cast<std::size_t>(rows[i]), [&](int k) { return source[k].map; });
     });
@@ -215,15 +222,16 @@ void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows, Worke
   }
 }
 
+void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows, Workers* workers) {
+  select_rows(from, rows, workers, [](auto& /*row*/, std::size_t /*i*/) {});
+}
+
 void Mlcp::assemble_rows_of(const Mlcp& from, const std::vector<int>& rows,
                             const std::vector<double>& zeta, double dt, Workers* workers) {
-  assemble_subset(from, rows, workers);
-  visit_mutable([&](auto& packed) {
-    for (size_t i = 0; i < rows.size(); ++i) {
-      packed[i].zeta = zeta[i];
-      // eq. 3-16 for bodies at rest under no force: η = ζ/Δt
-      packed[i].eta = zeta[i] / dt;
-    }
+  select_rows(from, rows, workers, [&](auto& row, std::size_t i) {
+    row.zeta = zeta[i];
+    // eq. 3-16 for bodies at rest under no force: η = ζ/Δt
+    row.eta = zeta[i] / dt;
   });
 }
 

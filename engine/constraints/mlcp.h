@@ -32,8 +32,9 @@ Vec6 inverse_mass_times(const RigidBody& body, const Vec6& block);
 
 // V/Δt + M⁻¹ F_ext of every body (eq. 3-16): the velocity each body would reach without
 // constraints, per Δt, in m/s² or rad/s². `out` is resized to the bodies (its memory is reused).
+// With `workers`, each of their threads takes a run of the bodies.
 void unconstrained_velocities(const std::vector<RigidBody>& bodies, double dt,
-                              std::vector<Vec6>& out);
+                              std::vector<Vec6>& out, Workers* workers = nullptr);
 
 // J_i V for a written row and the bodies' velocities now (eq. 5-4, 5-5: a contact point's
 // velocity along n), summed as every J X of the MLCP is (row_dot).
@@ -117,6 +118,11 @@ class Mlcp {
   // contact rows before it on its own bodies. Then joins the runs' groups in order.
   template <class Pack>
   void pack_in_runs(std::size_t count, Workers* workers, Pack&& pack);
+  // Rows of `from` copied as rows 0 .. rows.size() − 1 (assemble_subset), each then handed to
+  // finish(row, i) while it is at hand (assemble_rows_of sets its ζ and η).
+  template <class Finish>
+  void select_rows(const Mlcp& from, const std::vector<int>& rows, Workers* workers,
+                   Finish&& finish);
 
   bool planar_ = true;           // the layout in use: planar_rows_ or general_rows_
   int body_count_ = 0;           // n

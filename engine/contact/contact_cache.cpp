@@ -163,6 +163,8 @@ void ContactCache::write_rows(const std::vector<RigidBody>& bodies, const Contac
   add_contact_rows(pairs_, bodies, settings, step, rows, lambda, workers);
 }
 
-void ContactCache::store_lambdas(const double* lambda) { store_contact_lambdas(pairs_, lambda); }
+void ContactCache::store_lambdas(const double* lambda, Workers* workers) {
+  store_contact_lambdas(pairs_, lambda, workers);
+}
 
 }  // namespace lamina

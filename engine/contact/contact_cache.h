@@ -65,8 +65,9 @@ class ContactCache {
   void write_rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,
                   const StepSettings& step, std::vector<ConstraintRow>& rows,
                   std::vector<double>& lambda, Workers* workers = nullptr);
-  // Keeps each contact's solved λ, read from its rows, as its warm start for the next step.
-  void store_lambdas(const double* lambda);
+  // Keeps each contact's solved λ, read from its rows, as its warm start for the next step (on
+  // `workers`' threads if given).
+  void store_lambdas(const double* lambda, Workers* workers = nullptr);
 
  private:
   // Steps 1 and 2 for the cached pairs [cached, cached_end) and the fresh collisions [found,

@@ -1,6 +1,7 @@
 #include "contact/contact_rows.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <string>
@@ -171,6 +172,26 @@ void write_pair_rows(ContactPair& pair, const std::vector<RigidBody>& bodies,
   pair.rows.count = slots.next - pair.rows.first;
 }
 
+// Keeps a pair's solved λ in its contacts (store_contact_lambdas).
+void store_pair_lambdas(ContactPair& pair, const double* lambda) {
+  for (int k = 0; k < pair.count; ++k) {
+    Contact& contact = pair.contacts[k];
+    contact.lambda_normal = lambda[contact.row];
+    contact.lambda_tangent = contact.friction_rows[0] >= 0 ? lambda[contact.friction_rows[0]] : 0.0;
+  }
+  const bool one_row = pair.count == 2 && pair.contacts[0].friction_rows[0] >= 0 &&
+                       pair.contacts[0].friction_rows[0] == pair.contacts[1].friction_rows[0];
+  if (!one_row) return;
+  // the manifold's friction λ shared in proportion to the points' λc (halves when both are 0)
+  Contact& a = pair.contacts[0];
+  Contact& b = pair.contacts[1];
+  const double total = a.lambda_normal + b.lambda_normal;
+  const double share = total > 0.0 ? a.lambda_normal / total : 0.5;
+  const double friction = a.lambda_tangent;
+  a.lambda_tangent = share * friction;
+  b.lambda_tangent = friction - a.lambda_tangent;
+}
+
 }  // namespace
 
 void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
@@ -199,39 +220,42 @@ void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBo
   run_on(workers, write_run);
 }
 
-void store_contact_lambdas(std::vector<ContactPair>& pairs, const double* lambda) {
-  for (ContactPair& pair : pairs) {
-    for (int k = 0; k < pair.count; ++k) {
-      Contact& contact = pair.contacts[k];
-      contact.lambda_normal = lambda[contact.row];
-      contact.lambda_tangent = contact.friction_rows[0] >= 0 ? lambda[contact.friction_rows[0]] : 0.0;
-    }
-    const bool one_row = pair.count == 2 && pair.contacts[0].friction_rows[0] >= 0 &&
-                         pair.contacts[0].friction_rows[0] == pair.contacts[1].friction_rows[0];
-    if (!one_row) continue;
-    // the manifold's friction λ shared in proportion to the points' λc (halves when both are 0)
-    Contact& a = pair.contacts[0];
-    Contact& b = pair.contacts[1];
-    const double total = a.lambda_normal + b.lambda_normal;
-    const double share = total > 0.0 ? a.lambda_normal / total : 0.5;
-    const double friction = a.lambda_tangent;
-    a.lambda_tangent = share * friction;
-    b.lambda_tangent = friction - a.lambda_tangent;
-  }
+void store_contact_lambdas(std::vector<ContactPair>& pairs, const double* lambda,
+                           Workers* workers) {
+  const int runs = runs_on(workers);
+  run_on(workers, [&](int t) {
+    const auto [first, last] = share_of(pairs.size(), t, runs);
+    for (std::size_t p = first; p < last; ++p) store_pair_lambdas(pairs[p], lambda);
+  });
 }
 
 void position_targets(const std::vector<ContactPair>& pairs, const ContactSettings& settings,
-                      const StepSettings& step, std::vector<int>& rows, std::vector<double>& zeta) {
-  rows.clear();
-  zeta.clear();
-  for (const ContactPair& pair : pairs) {
-    for (int k = 0; k < pair.count; ++k) {
-      const Contact& contact = pair.contacts[k];
-      rows.push_back(contact.row);
-      zeta.push_back(gap_velocity(contact.separation, settings, step.dt) +
-                     push_out_velocity(contact.separation, settings, step));
+                      const StepSettings& step, std::vector<int>& rows, std::vector<double>& zeta,
+                      Workers* workers) {
+  // Each run's targets go after the runs before it: its contacts are counted first.
+  const int runs = runs_on(workers);
+  std::array<std::size_t, 65> first_target{};  // per run (at most 64), and the end
+  run_on(workers, [&](int t) {
+    const auto [first, last] = share_of(pairs.size(), t, runs);
+    std::size_t count = 0;
+    for (std::size_t p = first; p < last; ++p) count += static_cast<std::size_t>(pairs[p].count);
+    first_target[t + 1] = count;
+  });
+  for (int t = 0; t < runs; ++t) first_target[t + 1] += first_target[t];
+  rows.resize(first_target[runs]);
+  zeta.resize(first_target[runs]);
+  run_on(workers, [&](int t) {
+    const auto [first, last] = share_of(pairs.size(), t, runs);
+    std::size_t next = first_target[t];
+    for (std::size_t p = first; p < last; ++p) {
+      for (int k = 0; k < pairs[p].count; ++k, ++next) {
+        const Contact& contact = pairs[p].contacts[k];
+        rows[next] = contact.row;
+        zeta[next] = gap_velocity(contact.separation, settings, step.dt) +
+                     push_out_velocity(contact.separation, settings, step);
+      }
     }
-  }
+  });
 }
 
 }  // namespace lamina

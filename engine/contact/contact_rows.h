@@ -73,12 +73,17 @@ void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBo
 
 // Stores the solved λ of each contact's rows into the cache (the next step's warm start); a
 // manifold's one friction λ is shared by its points in proportion to their λc, so that each
-// point's share lies within its own ±μ λc and the two add up to the row's λ.
-void store_contact_lambdas(std::vector<ContactPair>& pairs, const double* lambda);
+// point's share lies within its own ±μ λc and the two add up to the row's λ. With `workers`,
+// each of their threads stores a run of the pairs (each pair's λ are its own).
+void store_contact_lambdas(std::vector<ContactPair>& pairs, const double* lambda,
+                           Workers* workers = nullptr);
 
 // Split impulse: each contact's contact row, and the ζ the same row asks of the position solve,
-// J V_p ≥ push-out (or gap). `rows` and `zeta` are overwritten.
+// J V_p ≥ push-out (or gap), in the order of the pairs and their contacts. `rows` and `zeta`
+// are overwritten. With `workers`, each of their threads writes a run of the pairs' targets, in
+// the same places.
 void position_targets(const std::vector<ContactPair>& pairs, const ContactSettings& settings,
-                      const StepSettings& step, std::vector<int>& rows, std::vector<double>& zeta);
+                      const StepSettings& step, std::vector<int>& rows, std::vector<double>& zeta,
+                      Workers* workers = nullptr);
 
 }  // namespace lamina

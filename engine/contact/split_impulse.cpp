@@ -40,7 +40,7 @@ void SplitImpulse::solve(const Mlcp& velocity, const std::vector<ContactPair>& p
   if (contact.correction != PositionCorrection::split_impulse) return;
   const double dt = step.dt;
   // The velocity MLCP's contact rows again, each asking J V_p ≥ its push-out (or gap) ζ
-  position_targets(pairs, contact, step, rows_, zeta_);
+  position_targets(pairs, contact, step, rows_, zeta_, workers);
   if (report == nullptr && nothing_to_push(zeta_)) return;  // a report shows the sweeps
   // eq. 3-16 for the push-out alone: the bodies start from rest under no force, so η = ζ/Δt
   position_.assemble_rows_of(velocity, rows_, zeta_, dt, workers);

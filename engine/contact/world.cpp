@@ -208,7 +208,7 @@ void World::build_rows() {
 void World::solve(WorldReport* report) {
   const double dt = settings_.step.dt;
   // eq. 3-16: J B λ = η with B = M⁻¹ Jᵀ, η = ζ/Δt − J (V/Δt + M⁻¹ F_ext)
-  unconstrained_velocities(bodies_, dt, unconstrained_);
+  unconstrained_velocities(bodies_, dt, unconstrained_, workers_.get());
   velocity_.assemble(bodies_, rows_, unconstrained_, dt, workers_.get());
   // eq. 3-24 by Projected Gauss-Seidel, friction bounds ±μ λc read as λc changes
   solve_recording(pgs_, velocity_, settings_.step.iterations, lambda_,
@@ -221,7 +221,7 @@ void World::solve(WorldReport* report) {
 
 void World::take_method_step(WorldReport* report) {
   const double dt = settings_.step.dt;
-  unconstrained_velocities(bodies_, dt, unconstrained_);
+  unconstrained_velocities(bodies_, dt, unconstrained_, workers_.get());
   velocity_.assemble(bodies_, rows_, unconstrained_, dt, workers_.get());
   joint_rows_.clear();
   for (const Joint& joint : joints_) joint_rows_.push_back(joint.rows);
@@ -245,7 +245,7 @@ void World::take_method_step(WorldReport* report) {
 }
 
 void World::remember_lambdas(WorldReport* report) {
-  cache_.store_lambdas(lambda_.data());
+  cache_.store_lambdas(lambda_.data(), workers_.get());
   joint_warm_start_.remember(rows_.data() + first_joint_row_, rows_.data() + rows_.size(),
                              lambda_.data() + first_joint_row_);
   if (report != nullptr) {
