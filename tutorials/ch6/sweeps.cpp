@@ -80,15 +80,14 @@ SweepErrors errors_at_plotted_step(const std::string& name) {
 // the frames before it).
 class Sweeps : public tutorial::Scene {
  public:
-  Sweeps() : world_(world_of("heavy-on-light:1000")) { step(); }
+  Sweeps() : world_(world_of("heavy-on-light:1000")) { world_.step(); }
 
   tutorial::SceneInfo info() const override {
     return {"lambda_error", world_.world().settings().step.dt, 4, 20, {Vec2(-4.0, -0.4), Vec2(4.0, 3.6)}};
   }
   void step() override {
     world_.step();
-    errors_ = sweep_errors(world_.report().velocity);
-    if (world_.step_index() == plotted_step) plotted_ = errors_;
+    if (world_.step_index() == plotted_step) plotted_ = sweep_errors(world_.report().velocity);
   }
 
   void draw(render::Frame& frame) const override {
@@ -96,7 +95,9 @@ class Sweeps : public tutorial::Scene {
     frame.caption = fill(tr("Chapter 6 · one step's λ after n sweeps, against the exact λ* (Lemke) · {0}"),
                          {scene_title("heavy-on-light:1000")});
     frame.force_scale = 0.8 / 9800.0;  // the heavy box's weight, 9800 N, drawn 0.8 m long
-    const SweepErrors& e = errors_;
+    // the last step's errors: the plotted step's as kept, another's computed for its frame
+    const bool plotted = plotted_ && world_.step_index() == plotted_step;
+    const SweepErrors e = plotted ? *plotted_ : sweep_errors(world_.report().velocity);
     render::Panel p;
     p.corner = render::Corner::top_left;
     p.title = tr("max |λ − λ*| after n sweeps from λ = 0 (N)");
@@ -128,8 +129,8 @@ class Sweeps : public tutorial::Scene {
     const std::vector<SweepErrors> errors{
         plotted_ ? *plotted_ : errors_at_plotted_step("heavy-on-light:1000"),
         errors_at_plotted_step("vertical-stack:20")};
-    for (const char* name : {"heavy-on-light:1000", "vertical-stack:20"}) {
-      const bool dashed = name != std::string("heavy-on-light:1000");
+    for (const std::string name : {"heavy-on-light:1000", "vertical-stack:20"}) {
+      const bool dashed = name == "vertical-stack:20";
       plot.series.push_back({"pgs, " + scene_title(name), render::palette::orange, dashed});
       plot.series.push_back({"block, " + scene_title(name), render::palette::reddish_purple, dashed});
     }
@@ -147,7 +148,6 @@ class Sweeps : public tutorial::Scene {
 
  private:
   view::SteppedWorld world_;
-  SweepErrors errors_;                  // of the last step
   std::optional<SweepErrors> plotted_;  // of the plotted step, once the frames' run took it
 };
 
