@@ -74,9 +74,8 @@ class LineWriter {
   // trace's time on a pyramid.)
   void write(const std::string& s) {
     const std::size_t n = s.size();
-    if (n <= long_name && plain(s)) {  // most names: copied whole
+    if (n <= long_name && copied_plain(s)) {  // most names: copied whole
       end_[0] = '"';
-      std::memcpy(end_ + 1, s.data(), n);
       end_[n + 1] = '"';
       end_ += n + 2;
       return;
@@ -105,9 +104,10 @@ class LineWriter {
   }
 
  private:
-  // True when s has nothing to escape: no '"', '\\' or control character (a table look-up per
-  // character: a name is checked on every line it is written in).
-  static bool plain(const std::string& s) {
+  // Copies s after the opening quote's place and says whether it has nothing to escape: no '"',
+  // '\\' or control character (a table look-up per character, in the one pass that copies it:
+  // a name is checked on every line it is written in). When it has, the copy is written over.
+  bool copied_plain(const std::string& s) {
     static constexpr auto escaped = [] {
       std::array<unsigned char, 256> table{};
       for (int c = 0; c < 0x20; ++c) table[static_cast<std::size_t>(c)] = 1;
@@ -115,7 +115,11 @@ class LineWriter {
       return table;
     }();
     unsigned char any = 0;
-    for (const char ch : s) any |= escaped[static_cast<unsigned char>(ch)];
+    char* out = end_ + 1;
+    for (const char ch : s) {
+      any |= escaped[static_cast<unsigned char>(ch)];
+      *out++ = ch;
+    }
     return any == 0;
   }
 
