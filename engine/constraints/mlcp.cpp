@@ -134,7 +134,7 @@ double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodi
 template <class Pack>
 void Mlcp::pack_in_runs(std::size_t count, Workers* workers, Pack&& pack) {
   const int runs = runs_on(workers);
-  groups_of_run_.resize(static_cast<std::size_t>(runs));
+  groups_of_run_.resize(runs);
   friction_own_in_run_.assign(static_cast<std::size_t>(runs), 1);
   const auto pack_run = [&](int t) {
     const auto [first, last] = share_of(count, t, runs);
@@ -335,11 +335,37 @@ void add_wrench(RigidBody& body, double lambda, const Block<3>& J) {
 
 }  // namespace
 
-void Mlcp::add_constraint_forces(std::vector<RigidBody>& bodies, const double* lambda) const {
-  visit([&](const auto& rows) {
-    // eq. 3-11: F_c = Jᵀ λ
-    for_each_force(rows, lambda, [&](int body, double l, const auto& J) {
-      add_wrench(bodies[body], l, J);
+void Mlcp::add_constraint_forces(std::vector<RigidBody>& bodies, const double* lambda,
+                                 Workers* workers) const {
+  const int runs = runs_on(workers);
+  if (runs == 1) {
+    visit([&](const auto& rows) {
+      // eq. 3-11: F_c = Jᵀ λ
+      for_each_force(rows, lambda, [&](int body, double l, const auto& J) {
+        add_wrench(bodies[body], l, J);
+      });
+    });
+    return;
+  }
+  // Each run adds to its share of the bodies only (the share each run integrates), taking the
+  // groups that touch them in row order: every body's sum in the one-thread order.
+  run_on(workers, [&](int t) {
+    const auto [first, last] = share_of(bodies.size(), t, runs);
+    const auto own = [&](int body) {
+      return body >= 0 && static_cast<std::size_t>(body) >= first && static_cast<std::size_t>(body) < last;
+    };
+    visit([&](const auto& rows) {
+      for (std::size_t g = 0; g + 1 < groups_.size(); ++g) {
+        const std::array<int, 2> pair = groups_[g].bodies;
+        const bool own0 = own(pair[0]);
+        const bool own1 = own(pair[1]);
+        if (!own0 && !own1) continue;
+        for (int i = groups_[g].first; i < groups_[g + 1].first; ++i) {
+          // eq. 3-11: F_c = Jᵀ λ, this run's blocks of it
+          if (own0) add_wrench(bodies[pair[0]], lambda[i], rows[i].J[0]);
+          if (own1) add_wrench(bodies[pair[1]], lambda[i], rows[i].J[1]);
+        }
+      }
     });
   });
 }

@@ -97,8 +97,10 @@ class Mlcp {
   // J_i X for per-body 6-vectors X (e.g. V: J_i V, eq. 3-8).
   double row_times(int i, const std::vector<Vec6>& per_body) const;
 
-  // F_c = Jᵀ λ (eq. 3-11) added to each body's accumulated force and torque.
-  void add_constraint_forces(std::vector<RigidBody>& bodies, const double* lambda) const;
+  // F_c = Jᵀ λ (eq. 3-11) added to each body's accumulated force and torque. With `workers`,
+  // each of their threads adds to a run of the bodies (each body's sum in row order all the same).
+  void add_constraint_forces(std::vector<RigidBody>& bodies, const double* lambda,
+                             Workers* workers = nullptr) const;
   // Body b's share of F_c = Jᵀ λ, [f_c; τ_c] about its centre, in N and N·m (eq. 3-11, 5-9).
   Vec6 constraint_wrench(int body, const double* lambda) const;
 
@@ -131,7 +133,7 @@ class Mlcp {
   std::vector<unsigned char> inertia_in_plane_;  // per body: I⁻¹ turns z into z (scratch)
   std::vector<RowGroup> groups_;           // runs of rows on the same bodies, and an end
   bool friction_on_own_bodies_ = true;
-  std::vector<std::vector<RowGroup>> groups_of_run_;  // scratch of pack_in_runs
+  PerRun<std::vector<RowGroup>> groups_of_run_;  // scratch of pack_in_runs
   std::vector<unsigned char> friction_own_in_run_;
   std::vector<unsigned char> planar_in_run_;  // scratch of assemble
 };

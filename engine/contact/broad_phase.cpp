@@ -122,7 +122,7 @@ void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
   }
   // 3. sweep: each run takes the bands that start in its share of the listed boxes
   const int runs = runs_on(workers);
-  memory.found_of_run.resize(static_cast<std::size_t>(runs));
+  memory.found_of_run.resize(runs);
   const auto band_at = [&](std::size_t listed) {
     return static_cast<int>(std::lower_bound(start.begin(), start.end() - 1, listed) -
                             start.begin());
@@ -139,14 +139,14 @@ void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
   std::vector<int>& first_count = memory.first_count;
   first_count.assign(boxes.size() + 1, 0);
   std::size_t total = 0;
-  for (const std::vector<BodyPair>& found : memory.found_of_run) {
-    for (const BodyPair& pair : found) ++first_count[pair.first + 1];
-    total += found.size();
+  for (int t = 0; t < runs; ++t) {
+    for (const BodyPair& pair : memory.found_of_run[t]) ++first_count[pair.first + 1];
+    total += memory.found_of_run[t].size();
   }
   for (std::size_t b = 0; b < boxes.size(); ++b) first_count[b + 1] += first_count[b];
   pairs.resize(total);
-  for (const std::vector<BodyPair>& found : memory.found_of_run) {
-    for (const BodyPair& pair : found) pairs[first_count[pair.first]++] = pair;
+  for (int t = 0; t < runs; ++t) {
+    for (const BodyPair& pair : memory.found_of_run[t]) pairs[first_count[pair.first]++] = pair;
   }
   for (std::size_t k = 1; k < pairs.size(); ++k) {
     const BodyPair pair = pairs[k];

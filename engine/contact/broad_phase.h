@@ -17,10 +17,9 @@
 #include <vector>
 
 #include "contact/shape.h"
+#include "parallel/workers.h"
 
 namespace lamina {
-
-class Workers;
 
 // Two bodies that may touch, by index into the world's bodies; first < second.
 struct BodyPair {
@@ -42,7 +41,7 @@ struct SweepMemory {
   std::vector<int> band_fill;             // per band, where its next box goes while listing
   std::vector<Aabb> banded;               // the boxes band after band, each band's in x order
   std::vector<int> banded_body;           // the body of each of them
-  std::vector<std::vector<BodyPair>> found_of_run;  // per run of bands, the pairs it found
+  PerRun<std::vector<BodyPair>> found_of_run;  // per run of bands, the pairs it found
   std::vector<int> first_count;           // per body, how many pairs have it first (the sort)
 };
 

@@ -109,7 +109,7 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::v
   // same bodies (both sorted by pair), and keeps its pairs in order; the runs are joined in order.
   if (pairs_.empty()) workers = nullptr;  // nothing to cut: the fresh collisions alone
   const int runs = runs_on(workers);
-  next_of_run_.resize(static_cast<std::size_t>(runs));
+  next_of_run_.resize(runs);
   const auto update_run = [&](int t) {
     const auto [first, last] = share_of(pairs_.size(), t, runs);
     // the fresh collisions from this run's first pair (the first run: from the start) to the
@@ -119,14 +119,14 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::v
       return std::lower_bound(fresh.begin(), fresh.end(), pairs_[cached_index].bodies,
                               [](const FreshCollision& f, const BodyPair& b) { return f.bodies < b; });
     };
-    std::vector<ContactPair>& next = t == 0 ? next_ : next_of_run_[t];
+    std::vector<ContactPair>& next = runs == 1 ? next_ : next_of_run_[t];
     next.clear();
     merge_run(pairs_.begin() + first, pairs_.begin() + last,
               t == 0 ? fresh.begin() : fresh_from(first, false),
               fresh_from(last, t == runs - 1), poses, shapes, materials, settings, next);
   };
   run_on(workers, update_run);
-  for (int t = 1; t < runs; ++t) next_.insert(next_.end(), next_of_run_[t].begin(), next_of_run_[t].end());
+  if (runs > 1) join_runs(next_of_run_, next_, workers);
   pairs_.swap(next_);
 }
 

@@ -20,6 +20,7 @@
 
 #include "contact/contact.h"
 #include "contact/contact_rows.h"
+#include "parallel/workers.h"
 
 namespace lamina {
 
@@ -82,7 +83,7 @@ class ContactCache {
 
   std::vector<ContactPair> pairs_;  // this step's pairs, sorted
   std::vector<ContactPair> next_;   // scratch for the update, kept to avoid allocation
-  std::vector<std::vector<ContactPair>> next_of_run_;  // on threads: runs 1.., theirs
+  PerRun<std::vector<ContactPair>> next_of_run_;  // on threads: each run's pairs
 };
 
 }  // namespace lamina

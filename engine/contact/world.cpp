@@ -130,7 +130,7 @@ void World::advance(WorldReport* report) {
   } else {
     solve(report);             // 5
     // 6. eq. 3-11, 5-9: F_c = Jᵀ λ
-    velocity_.add_constraint_forces(bodies_, lambda_.data());
+    velocity_.add_constraint_forces(bodies_, lambda_.data(), workers_.get());
     // 7. eq. 2-1..2-8 under F_ext + F_c, with split impulse's push-out
     integrate_with_push_out(bodies_, split_impulse_.push_out(), settings_.step.dt,
                             settings_.step.pitfalls, workers_.get());
@@ -140,8 +140,13 @@ void World::advance(WorldReport* report) {
 }
 
 void World::apply_forces() {
-  // eq. 5-2: F_ext = m g on the dynamic bodies, on top of forces applied since the last step
-  apply_gravity(bodies_, settings_.step.gravity);
+  // eq. 5-2: F_ext = m g on the dynamic bodies, on top of forces applied since the last step;
+  // each run its share of the bodies, the share it integrates
+  const int runs = runs_on(workers_.get());
+  run_on(workers_.get(), [&](int t) {
+    const auto [first, last] = share_of(bodies_.size(), t, runs);
+    for (std::size_t i = first; i < last; ++i) apply_gravity(bodies_[i], settings_.step.gravity);
+  });
 }
 
 void World::detect_collisions() {
@@ -157,14 +162,12 @@ void World::detect_collisions() {
   });
   sort_and_sweep(boxes_, sweep_memory_, candidate_pairs_, workers_.get());
   // each run its share of the candidates, in order, its collisions appended in order
-  fresh_of_thread_.resize(static_cast<std::size_t>(runs));
+  fresh_of_thread_.resize(runs);
   run_on(workers_.get(), [&](int t) {
     const auto [first, last] = share_of(candidate_pairs_.size(), t, runs);
-    find_collisions(first, last, t == 0 ? fresh_ : fresh_of_thread_[t]);
+    find_collisions(first, last, runs == 1 ? fresh_ : fresh_of_thread_[t]);
   });
-  for (int t = 1; t < runs; ++t) {
-    fresh_.insert(fresh_.end(), fresh_of_thread_[t].begin(), fresh_of_thread_[t].end());
-  }
+  if (runs > 1) join_runs(fresh_of_thread_, fresh_, workers_.get());
 }
 
 void World::find_collisions(std::size_t first, std::size_t last,

@@ -141,7 +141,7 @@ class World {
   SweepMemory sweep_memory_;                 // bodies by min.x, kept for the next sort
   std::vector<BodyPair> candidate_pairs_;    // the broad phase's pairs
   std::vector<FreshCollision> fresh_;        // the narrow phase's deepest points
-  std::vector<std::vector<FreshCollision>> fresh_of_thread_;  // on threads: threads 1.., theirs
+  PerRun<std::vector<FreshCollision>> fresh_of_thread_;  // on threads: each run's
   std::vector<ConstraintRow> rows_;          // the rows as written: contacts', then joints'
   std::size_t first_joint_row_ = 0;          // where the joints' rows start in rows_
   std::vector<Vec6> unconstrained_;          // V/Δt + M⁻¹ F_ext per body (eq. 3-16), m/s², rad/s²

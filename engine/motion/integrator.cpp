@@ -34,11 +34,13 @@ void integrate(RigidBody& body, double dt, Integration scheme, Pitfalls pitfalls
   body.update_derived();
 }
 
+void apply_gravity(RigidBody& body, const Vec3& gravity) {
+  // eq. 5-2: F_ext = [m1 g, 0, 0, 0]: a fixed body is not pushed by its weight
+  if (!body.is_static()) body.force += body.mass * gravity;
+}
+
 void apply_gravity(std::vector<RigidBody>& bodies, const Vec3& gravity) {
-  for (RigidBody& body : bodies) {
-    // eq. 5-2: F_ext = [m1 g, 0, 0, 0]: a fixed body is not pushed by its weight
-    if (!body.is_static()) body.force += body.mass * gravity;
-  }
+  for (RigidBody& body : bodies) apply_gravity(body, gravity);
 }
 
 void step_unconstrained(std::vector<RigidBody>& bodies, const Vec3& gravity, double dt,

@@ -20,7 +20,9 @@ enum class Integration {
 void integrate(RigidBody& body, double dt, Integration scheme = Integration::semi_implicit,
                Pitfalls pitfalls = {});
 
-// Adds gravity m g to every dynamic body's force (F_ext of eq. 5-2; a static body gets none).
+// Adds gravity m g to a dynamic body's force (F_ext of eq. 5-2; a static body gets none), or to
+// every body's.
+void apply_gravity(RigidBody& body, const Vec3& gravity);
 void apply_gravity(std::vector<RigidBody>& bodies, const Vec3& gravity);
 
 // The chapter-2 world step: gravity, integrate each body, clear the forces.

@@ -5,6 +5,7 @@
 // threads change how fast a step is taken, never one bit of it.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
@@ -82,6 +83,40 @@ void run_on(Workers* workers, Task&& task) {
   } else {
     task(0);
   }
+}
+
+// One T for each run of a team, each on cache lines of its own: runs that keep writing to their
+// own T (a vector's end, as they append to it) then never take a line from each other. (Side by
+// side in a std::vector, two runs' vectors share a line, and each append of one waits for the
+// line to come back from the other core.)
+template <class T>
+class PerRun {
+ public:
+  void resize(int runs) { slots_.resize(static_cast<std::size_t>(runs)); }
+  int size() const { return static_cast<int>(slots_.size()); }
+  T& operator[](int t) { return slots_[static_cast<std::size_t>(t)].value; }
+  const T& operator[](int t) const { return slots_[static_cast<std::size_t>(t)].value; }
+
+ private:
+  struct alignas(64) Slot {
+    T value;
+  };
+  std::vector<Slot> slots_;
+};
+
+// Joins the vectors that the runs of `workers` made, in order, into `out` (its memory reused):
+// each run's thread copies its own items into place, so that they stay in the cache of the core
+// that made them and will read them next. `of_run` has runs_on(workers) vectors.
+template <class T>
+void join_runs(const PerRun<std::vector<T>>& of_run, std::vector<T>& out, Workers* workers) {
+  std::size_t total = 0;
+  for (int t = 0; t < of_run.size(); ++t) total += of_run[t].size();
+  out.resize(total);
+  run_on(workers, [&](int t) {
+    std::size_t at = 0;
+    for (int k = 0; k < t; ++k) at += of_run[k].size();
+    std::copy(of_run[t].begin(), of_run[t].end(), out.begin() + static_cast<std::ptrdiff_t>(at));
+  });
 }
 
 // The contiguous share [first, last) of `count` items that part `part` of `parts` takes: equal

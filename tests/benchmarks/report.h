@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,16 @@ struct RunKey {
   bool operator<(const RunKey& o) const;
 };
 
+// One repetition of the two-thread benchmark: the same pyramid on one thread, then on two.
+struct ThreadPair {
+  std::optional<double> round_trip_ns;  // a cache line between the cores and back, just before
+  PyramidRun one;                       // on one thread
+  PyramidRun two;                       // on two threads
+};
+
 struct Measurements {
   std::map<RunKey, std::vector<PyramidRun>> runs;       // every repetition of every benchmark
+  std::map<int, std::vector<ThreadPair>> thread_pairs;  // the two-thread runs, by pyramid base
   std::vector<WarmStartRun> warm_starts;                // the warm-start measurements
   std::map<std::string, std::vector<TraceRun>> traces;  // every traced run, by method
   std::string load_before;                              // /proc/loadavg when the runs started
