@@ -350,7 +350,9 @@ void Mlcp::add_constraint_forces(std::vector<RigidBody>& bodies, const double* l
   // Each run adds to its share of the bodies only (the share each run integrates), taking the
   // groups that touch them in row order: every body's sum in the one-thread order.
   run_on(workers, [&](int t) {
-    const auto [first, last] = share_of(bodies.size(), t, runs);
+    const std::pair<std::size_t, std::size_t> share = share_of(bodies.size(), t, runs);
+    const std::size_t first = share.first;  // named, not bound: a lambda may not capture a binding
+    const std::size_t last = share.second;
     const auto own = [&](int body) {
       return body >= 0 && static_cast<std::size_t>(body) >= first && static_cast<std::size_t>(body) < last;
     };
