@@ -359,14 +359,12 @@ void Mlcp::add_constraint_forces(std::vector<RigidBody>& bodies, const double* l
     visit([&](const auto& rows) {
       for (std::size_t g = 0; g + 1 < groups_.size(); ++g) {
         const std::array<int, 2> pair = groups_[g].bodies;
-        const bool own0 = own(pair[0]);
-        const bool own1 = own(pair[1]);
-        if (!own0 && !own1) continue;
-        for (int i = groups_[g].first; i < groups_[g + 1].first; ++i) {
-          // eq. 3-11: F_c = Jᵀ λ, this run's blocks of it
-          if (own0) add_wrench(bodies[pair[0]], lambda[i], rows[i].J[0]);
-          if (own1) add_wrench(bodies[pair[1]], lambda[i], rows[i].J[1]);
-        }
+        if (!own(pair[0]) && !own(pair[1])) continue;
+        // eq. 3-11: F_c = Jᵀ λ, this run's blocks of it
+        for_each_force(rows, lambda, groups_[g].first, groups_[g + 1].first,
+                       [&](int body, double l, const auto& J) {
+                         if (own(body)) add_wrench(bodies[body], l, J);
+                       });
       }
     });
   });

@@ -85,15 +85,23 @@ void transpose_multiply(const PackedRows<N>& rows, int body_count, const double*
   }
 }
 
-// F_c = Jᵀ λ (eq. 3-11), row by row: add(body, λ_i, J_i's block of that body) for each block,
-// in row order, so every sum of the forces on a body is taken in the same order.
+// F_c = Jᵀ λ (eq. 3-11), rows [first, last) one by one: add(body, λ_i, J_i's block of that
+// body) for each block, in row order, so every sum of the forces on a body is taken in the same
+// order whether the rows are walked in one piece or group by group.
 template <int N, class Add>
-void for_each_force(const PackedRows<N>& rows, const double* lambda, Add&& add) {
-  for (std::size_t i = 0; i < rows.size(); ++i) {
+void for_each_force(const PackedRows<N>& rows, const double* lambda, std::size_t first,
+                    std::size_t last, Add&& add) {
+  for (std::size_t i = first; i < last; ++i) {
     const PackedRow<N>& row = rows[i];
     add(row.map[0], lambda[i], row.J[0]);
     if (row.two_bodies()) add(row.map[1], lambda[i], row.J[1]);
   }
+}
+
+// F_c = Jᵀ λ over all the rows.
+template <int N, class Add>
+void for_each_force(const PackedRows<N>& rows, const double* lambda, Add&& add) {
+  for_each_force(rows, lambda, 0, rows.size(), add);
 }
 
 }  // namespace lamina
