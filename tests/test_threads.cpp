@@ -3,10 +3,13 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstring>
+#include <optional>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -81,6 +84,23 @@ OnThreads solved_on_threads(int threads, const StepReport& step, int sweeps,
 }
 
 }  // namespace
+
+// Five boxes falling apart in the air, those named in `thrown` thrown sideways at 1e308 m/s, the
+// first to the right and the others to the left (two thrown the same way would be at the same
+// x, rounded, after one step, and collide): a thrown box's x overflows to ±inf in step k = 107
+// (1e308 m/s × 108/60 s > 1.8e308 m).
+Scene boxes_thrown(const std::vector<std::size_t>& thrown) {
+  Scene scene;
+  scene.name = "thrown";
+  for (std::size_t i = 0; i < 5; ++i) {
+    BodyDescription box;
+    box.name = "box" + std::to_string(i);
+    box.position = {3.0 * static_cast<double>(i), 100.0};
+    scene.bodies.push_back(box);
+  }
+  for (const std::size_t i : thrown) scene.bodies[i].velocity = {i == thrown[0] ? 1e308 : -1e308, 0.0};
+  return scene;
+}
 
 TEST_SUITE("Threads") {
   TEST_CASE("shares are consecutive, cover every item once and differ by at most one") {
@@ -161,6 +181,49 @@ TEST_SUITE("Threads") {
       }
     });
     CHECK(mismatches == 0);
+  }
+
+  TEST_CASE("each run's items go after the runs before it: run_starts") {
+    // counts 3, 0 and 5 (each run counting on its own thread): starts 0, 3, 3 and the total 8
+    Workers workers(3);
+    const std::array<std::size_t, 3> counts{3, 0, 5};
+    const RunStarts starts = run_starts(&workers, [&](int t) { return counts[static_cast<std::size_t>(t)]; });
+    CHECK(starts[0] == 0);
+    CHECK(starts[1] == 3);
+    CHECK(starts[2] == 3);
+    CHECK(starts[3] == 8);
+    CHECK(run_starts(nullptr, [](int) { return std::size_t{7}; })[1] == 7);  // one run, no team
+  }
+
+  TEST_CASE("the first non-finite body the threads find is the first in the order added") {
+    // Shares of the five bodies: [0, 3) and [3, 5) on 2 threads, [0, 2), [2, 4), [4, 5) on 3.
+    // One thrown box in the last share, then one in the first share and one in the last: the
+    // step's answer is the first such box, found by a scan of every body here, in step 107
+    // (exact: the overflow above) and not before.
+    for (const std::vector<std::size_t>& thrown : {std::vector<std::size_t>{4}, std::vector<std::size_t>{1, 4}}) {
+      for (const int threads : {1, 2, 3}) {
+        CAPTURE(thrown[0]);
+        CAPTURE(threads);
+        const Scene scene = boxes_thrown(thrown);
+        WorldSettings settings = world_settings(scene);
+        settings.threads = threads;
+        World world = build_world(scene, settings);
+        CHECK_FALSE(world.first_non_finite_body());  // no step yet
+        for (int k = 0; k < 108; ++k) {
+          world.step();
+          std::optional<std::size_t> scanned;
+          for (std::size_t i = 0; i < world.bodies().size() && !scanned; ++i) {
+            const RigidBody& b = world.bodies()[i];
+            const bool finite = b.x.allFinite() && b.q.coeffs().allFinite() && b.v.allFinite() &&
+                                b.angular_velocity.allFinite();
+            if (!finite) scanned = i;
+          }
+          CHECK(world.first_non_finite_body() == scanned);
+          if (k < 107) CHECK_FALSE(scanned);
+        }
+        CHECK(world.first_non_finite_body() == std::optional<std::size_t>(thrown[0]));
+      }
+    }
   }
 
   TEST_CASE("PGS swept on 2 and 3 threads gives the one-thread λ bit for bit") {

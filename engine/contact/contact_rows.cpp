@@ -201,21 +201,21 @@ void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBo
   // Each run of the workers writes a run of the pairs. Its rows' place is counted first, so
   // that the runs write side by side into rows sized for all of them at once.
   const int runs = runs_on(workers);
-  std::array<int, 65> first_row{};  // per run (at most 64), and the end
-  first_row[0] = 0;
-  for (int t = 0; t < runs; ++t) {
+  const RunStarts first_row = run_starts(workers, [&](int t) {
     const auto [first, last] = share_of(pairs.size(), t, runs);
-    int count = 0;
-    for (std::size_t p = first; p < last; ++p) count += rows_of_pair(pairs[p], settings);
-    first_row[t + 1] = first_row[t] + count;
-  }
-  rows.resize(static_cast<std::size_t>(first_row[runs]));
-  lambda.resize(static_cast<std::size_t>(first_row[runs]));
+    std::size_t count = 0;
+    for (std::size_t p = first; p < last; ++p) count += static_cast<std::size_t>(rows_of_pair(pairs[p], settings));
+    return count;
+  });
+  rows.resize(first_row[static_cast<std::size_t>(runs)]);
+  lambda.resize(first_row[static_cast<std::size_t>(runs)]);
   const auto write_run = [&](int t) {
-    RowSlots slots{rows, lambda, first_row[t]};
+    const std::size_t start = first_row[static_cast<std::size_t>(t)];
+    RowSlots slots{rows, lambda, static_cast<int>(start)};
     const auto [first, last] = share_of(pairs.size(), t, runs);
     for (std::size_t p = first; p < last; ++p) write_pair_rows(pairs[p], bodies, settings, step, slots);
-    assert(slots.next == first_row[t + 1]);  // rows_of_pair counted what write_pair_rows wrote
+    // rows_of_pair counted what write_pair_rows wrote
+    assert(static_cast<std::size_t>(slots.next) == first_row[static_cast<std::size_t>(t) + 1]);
   };
   run_on(workers, write_run);
 }
@@ -234,19 +234,17 @@ void position_targets(const std::vector<ContactPair>& pairs, const ContactSettin
                       Workers* workers) {
   // Each run's targets go after the runs before it: its contacts are counted first.
   const int runs = runs_on(workers);
-  std::array<std::size_t, 65> first_target{};  // per run (at most 64), and the end
-  run_on(workers, [&](int t) {
+  const RunStarts first_target = run_starts(workers, [&](int t) {
     const auto [first, last] = share_of(pairs.size(), t, runs);
     std::size_t count = 0;
     for (std::size_t p = first; p < last; ++p) count += static_cast<std::size_t>(pairs[p].count);
-    first_target[t + 1] = count;
+    return count;
   });
-  for (int t = 0; t < runs; ++t) first_target[t + 1] += first_target[t];
-  rows.resize(first_target[runs]);
-  zeta.resize(first_target[runs]);
+  rows.resize(first_target[static_cast<std::size_t>(runs)]);
+  zeta.resize(first_target[static_cast<std::size_t>(runs)]);
   run_on(workers, [&](int t) {
     const auto [first, last] = share_of(pairs.size(), t, runs);
-    std::size_t next = first_target[t];
+    std::size_t next = first_target[static_cast<std::size_t>(t)];
     for (std::size_t p = first; p < last; ++p) {
       for (int k = 0; k < pairs[p].count; ++k, ++next) {
         const Contact& contact = pairs[p].contacts[k];

@@ -1,6 +1,7 @@
 #include "contact/world.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <string>
 #include <utility>
@@ -135,6 +136,7 @@ void World::advance(WorldReport* report) {
     integrate_with_push_out(bodies_, split_impulse_.push_out(), settings_.step.dt,
                             settings_.step.pitfalls, workers_.get());
   }
+  find_non_finite_body();
   time_ += settings_.step.dt;
   steps_taken_in_process.fetch_add(1, std::memory_order_relaxed);
 }
@@ -257,12 +259,18 @@ void World::remember_lambdas(WorldReport* report) {
   }
 }
 
-std::optional<std::size_t> first_non_finite_body(const World& world) {
-  const std::vector<RigidBody>& bodies = world.bodies();
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (!bodies[i].has_finite_state()) return i;
-  }
-  return std::nullopt;
+void World::find_non_finite_body() {
+  // each run its share of the bodies, the share it integrated; then the first of the runs' firsts
+  const int runs = runs_on(workers_.get());
+  std::array<std::size_t, 64> first_of_run{};  // per run (at most 64); bodies_.size(): none
+  run_on(workers_.get(), [&](int t) {
+    const auto [first, last] = share_of(bodies_.size(), t, runs);
+    std::size_t i = first;
+    while (i < last && bodies_[i].has_finite_state()) ++i;
+    first_of_run[static_cast<std::size_t>(t)] = i < last ? i : bodies_.size();
+  });
+  const std::size_t first = *std::min_element(first_of_run.begin(), first_of_run.begin() + runs);
+  first_non_finite_body_ = first < bodies_.size() ? std::optional<std::size_t>(first) : std::nullopt;
 }
 
 double mechanical_energy(const World& world) {

@@ -95,6 +95,11 @@ class World {
 
   const WorldSettings& settings() const { return settings_; }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
+  // The first body (in the order added) whose x, q, v or ω the last step left non-finite: where
+  // a run that diverged shows it (`lamina run` stops there). Nothing while every state is finite.
+  // Each thread looks at the bodies it integrated, at the end of the step, while they are still
+  // in its core's cache.
+  std::optional<std::size_t> first_non_finite_body() const { return first_non_finite_body_; }
   const Shape& shape(int index) const { return shapes_.at(index); }
   double time() const { return time_; }  // t, in s
   // The contacts solved in the last step (point, normal, cached or fresh, λ, their rows).
@@ -121,9 +126,11 @@ class World {
   void solve(WorldReport* report);
   void take_method_step(WorldReport* report);
   void remember_lambdas(WorldReport* report);
+  void find_non_finite_body();
 
   WorldSettings settings_;
   double time_ = 0.0;                  // t, in s
+  std::optional<std::size_t> first_non_finite_body_;  // after the last step
   std::vector<RigidBody> bodies_;      // the bodies, in the order they were added
   std::vector<Shape> shapes_;          // bodies_[i]'s shape
   std::vector<Material> materials_;    // bodies_[i]'s friction and restitution
@@ -152,10 +159,6 @@ class World {
   PgsSolver pgs_;                            // the sweeps' a = B λ, for both MLCPs in turn
   std::vector<RowRange> joint_rows_;         // each joint's rows, for a StepMethod
 };
-
-// The first body (in the order added) whose x, q, v or ω is no longer finite: where a run that
-// diverged shows it. Nothing while every state is finite.
-std::optional<std::size_t> first_non_finite_body(const World& world);
 
 // E = Σ (½ m vᵀv + ½ ωᵀ I ω) − m g·x over the moving bodies, in J: eq. 1-47 plus gravity's
 // potential energy, 0 at x = 0 (the text's E is kinetic only).

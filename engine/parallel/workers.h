@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
@@ -122,6 +123,20 @@ void join_runs(const PerRun<std::vector<T>>& of_run, std::vector<T>& out, Worker
 // The contiguous share [first, last) of `count` items that part `part` of `parts` takes: equal
 // shares in order, the first count % parts of them one item longer. Depends on nothing else.
 std::pair<std::size_t, std::size_t> share_of(std::size_t count, int part, int parts);
+
+// Where each run's items go when the runs of `workers` write them side by side, in run order:
+// starts[t] is run t's first place, starts[runs] the total. Each run counts its own items
+// (count(t) on its own thread), so that what it reads to count them stays in the cache of the
+// core that will write them next, not in the first thread's.
+using RunStarts = std::array<std::size_t, 65>;  // per run (at most 64 threads), and the end
+template <class Count>
+RunStarts run_starts(Workers* workers, Count&& count) {
+  RunStarts starts{};
+  run_on(workers, [&](int t) { starts[static_cast<std::size_t>(t) + 1] = count(t); });
+  const std::size_t runs = static_cast<std::size_t>(runs_on(workers));
+  for (std::size_t t = 0; t < runs; ++t) starts[t + 1] += starts[t];
+  return starts;
+}
 
 // How far one thread of a pipeline has got: a count that only grows, published by its thread
 // after the work it counts (release) and read by the threads waiting on it (acquire), on a cache

@@ -107,7 +107,7 @@ long diverging_step(const Scene& scene) {
   World world = build_world(scene, world_settings(scene));
   for (long step = 0; step < 1000; ++step) {
     world.step();
-    if (first_non_finite_body(world)) return step;
+    if (world.first_non_finite_body()) return step;
   }
   return -1;
 }

@@ -82,7 +82,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   for (int i = 0; i < steps; ++i) world->step();
   ++non_finite_count.stepped;
-  if (lamina::first_non_finite_body(*world)) {
+  if (world->first_non_finite_body()) {
     ++non_finite_count.non_finite;
     if (non_finite_count.abort_on_one) {
       std::fprintf(stderr, "scene_fuzzer: non-finite body state after %d steps\n", steps);

@@ -248,7 +248,7 @@ InvariantReport check_invariants(const GeneratedScene& generated) {
     if (rest && step + 1 == generated.steps / 2) {
       halfway = world.bodies()[index_of.at(generated.resting)];
     }
-    if (first_non_finite_body(world)) {
+    if (world.first_non_finite_body()) {
       report.violation = at_step(step, "finite: a body's state is no longer finite");
       return report;
     }

@@ -75,7 +75,7 @@ void Simulation::step(WorldReport* report) {
 }
 
 void Simulation::throw_if_diverged() const {
-  const std::optional<std::size_t> body = first_non_finite_body(world_);
+  const std::optional<std::size_t> body = world_.first_non_finite_body();
   if (!body) return;
   throw RunStopped(origin_ + ": step " + std::to_string(steps_taken_) + ": body \"" +
                        scene_.bodies[*body].name + "\" is no longer finite " +

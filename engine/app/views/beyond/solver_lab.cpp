@@ -73,7 +73,7 @@ LabRun run_lab(const Scene& scene, int steps) {
     world.step();
     for (const ContactPair& pair : world.contact_pairs()) rows += pair.rows.count;
     for (int j = 0; j < world.joint_count(); ++j) rows += world.joint_rows(j).count;
-    if (first_non_finite_body(world)) {
+    if (world.first_non_finite_body()) {
       meter.diverged();
       break;
     }
