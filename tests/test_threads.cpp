@@ -200,9 +200,10 @@ TEST_SUITE("Threads") {
     // One thrown box in the last share, then one in the first share and one in the last: the
     // step's answer is the first such box, found by a scan of every body here, in step 107
     // (exact: the overflow above) and not before.
-    for (const std::vector<std::size_t>& thrown : {std::vector<std::size_t>{4}, std::vector<std::size_t>{1, 4}}) {
+    const std::vector<std::vector<std::size_t>> cases{{4}, {1, 4}};
+    for (const std::vector<std::size_t>& thrown : cases) {
       for (const int threads : {1, 2, 3}) {
-        CAPTURE(thrown[0]);
+        CAPTURE(thrown.size());
         CAPTURE(threads);
         const Scene scene = boxes_thrown(thrown);
         WorldSettings settings = world_settings(scene);

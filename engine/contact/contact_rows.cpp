@@ -204,7 +204,9 @@ void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBo
   const RunStarts first_row = run_starts(workers, [&](int t) {
     const auto [first, last] = share_of(pairs.size(), t, runs);
     std::size_t count = 0;
-    for (std::size_t p = first; p < last; ++p) count += static_cast<std::size_t>(rows_of_pair(pairs[p], settings));
+    for (std::size_t p = first; p < last; ++p) {
+      count += static_cast<std::size_t>(rows_of_pair(pairs[p], settings));
+    }
     return count;
   });
   rows.resize(first_row[static_cast<std::size_t>(runs)]);
