@@ -83,8 +83,6 @@ OnThreads solved_on_threads(int threads, const StepReport& step, int sweeps,
   return out;
 }
 
-}  // namespace
-
 // Five boxes falling apart in the air, those named in `thrown` thrown sideways at 1e308 m/s, the
 // first to the right and the others to the left (two thrown the same way would be at the same
 // x, rounded, after one step, and collide): a thrown box's x overflows to ±inf in step k = 107
@@ -98,9 +96,13 @@ Scene boxes_thrown(const std::vector<std::size_t>& thrown) {
     box.position = {3.0 * static_cast<double>(i), 100.0};
     scene.bodies.push_back(box);
   }
-  for (const std::size_t i : thrown) scene.bodies[i].velocity = {i == thrown[0] ? 1e308 : -1e308, 0.0};
+  for (const std::size_t i : thrown) {
+    scene.bodies[i].velocity = {i == thrown[0] ? 1e308 : -1e308, 0.0};
+  }
   return scene;
 }
+
+}  // namespace
 
 TEST_SUITE("Threads") {
   TEST_CASE("shares are consecutive, cover every item once and differ by at most one") {
@@ -187,7 +189,8 @@ TEST_SUITE("Threads") {
     // counts 3, 0 and 5 (each run counting on its own thread): starts 0, 3, 3 and the total 8
     Workers workers(3);
     const std::array<std::size_t, 3> counts{3, 0, 5};
-    const RunStarts starts = run_starts(&workers, [&](int t) { return counts[static_cast<std::size_t>(t)]; });
+    const RunStarts starts =
+        run_starts(&workers, [&](int t) { return counts[static_cast<std::size_t>(t)]; });
     CHECK(starts[0] == 0);
     CHECK(starts[1] == 3);
     CHECK(starts[2] == 3);
