@@ -90,14 +90,16 @@ async function key(name, code) {
     await send("Input.dispatchKeyEvent", { type, key: name, code: name, windowsVirtualKeyCode: code, nativeVirtualKeyCode: code }, session);
   }
 }
+// Waits until the frame image of the step shown has loaded, or failed to (its naturalWidth then
+// stays 0, which the checks report): a step changed by a key loads its frame after the key.
+const frameSettled = () => evaluate(`new Promise((done) => { const img = document.getElementById("frame");
+    if (img.complete && img.naturalWidth) done(); else { img.onload = () => done(); img.onerror = () => done(); } })`);
 async function open(url) {
   const loaded = once("Page.loadEventFired");
   await send("Page.navigate", { url }, session);
   await loaded;
   if (url === "about:blank") return;
-  // the frame image of the step shown has loaded
-  await evaluate(`new Promise((done) => { const img = document.getElementById("frame");
-    if (img.complete && img.naturalWidth) done(); else img.onload = () => done(); })`);
+  await frameSettled();
 }
 // What the page shows: the step, the sweep, each row's λ, the bodies at t + Δt (full precision
 // from the cells' data-value).
@@ -154,6 +156,7 @@ try {
         await open("about:blank");
         await open(`${url}#run=${r}`);
         for (let i = 0; i < 3; ++i) { await key("ArrowRight", 39); await key("ArrowUp", 38); await key("ArrowDown", 40); }
+        await frameSettled();
         const now = await shown();
         assert.equal(now.step, Math.min(3, runs[r].steps - 1), `${pageFolder} run ${r} (${runs[r].scene}): → three times`);
         assert.ok(now.frame > 0, `${pageFolder} run ${r}: the frame loaded`);
