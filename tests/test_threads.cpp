@@ -284,6 +284,33 @@ TEST_SUITE("Threads") {
     }
   }
 
+  TEST_CASE("the parts' plan is kept while the rows' groups stay, and made again when they change") {
+    // A solver keeps the plans of the last two MLCPs it swept (part_plan.h). In its first step
+    // the same pyramid with two boxes swapped in the list has as many groups and rows (the
+    // same boxes touch), only other bodies in them: its plan must be made again, and each λ
+    // must be a fresh solver's bit for bit.
+    const StepReport placed = pyramid_mlcp(0);
+    Scene swapped_scene = builtin_scene("pyramid:20");
+    std::swap(swapped_scene.bodies[10], swapped_scene.bodies[100]);
+    const StepReport swapped = pyramid_mlcp(0, swapped_scene);
+    REQUIRE(swapped.mlcp.groups().size() == placed.mlcp.groups().size());
+    REQUIRE(swapped.mlcp.row_count() == placed.mlcp.row_count());
+    PgsSolver kept;
+    const auto solve_kept = [&](const StepReport& step, long plans_made) {
+      PgsSolver fresh;
+      CHECK(solved(kept, step, 8) == solved(fresh, step, 8));
+      CHECK(kept.swept_in_lanes());  // the plan was used: the checks can fail
+      CHECK(kept.plans_made() == plans_made);
+    };
+    solve_kept(placed, 1);
+    solve_kept(placed, 1);  // kept
+    solve_kept(swapped, 2);  // the same sizes, other groups: made again
+    solve_kept(placed, 2);  // the plan before it, kept beside it
+    solve_kept(swapped, 2);
+    solve_kept(pyramid_mlcp(60), 3);  // settled: other contacts
+    solve_kept(placed, 4);  // no longer among the last two
+  }
+
   TEST_CASE("rows in no order of place are swept on one thread, to the same λ") {
     // The pyramid's boxes listed in a shuffled order: a box's rows then share bodies with rows
     // all over the order, the threads would wait at nearly every group, and the solver keeps to

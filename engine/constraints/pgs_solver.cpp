@@ -62,12 +62,9 @@ template <int N, bool ClampIncrement>
   if (c2 >= 0) a[c2] = e2;
 }
 
-// The rows are swept in parts (threads, lanes) when there are a few hundred rows, and when for
-// each cut between two parts at most one group in max_wait_share waits on another part (a
-// pyramid of base 20 in 2 parts: one in 20); otherwise the parts would mostly wait on each
-// other.
+// The rows are swept in parts (threads, lanes) when there are a few hundred rows, and when the
+// parts seldom wait on each other (PartPlan::usable).
 constexpr int threaded_min_rows = 512;
-constexpr int max_wait_share = 8;
 
 // The pitfall lambda-b1: the text's TransposeMultiply as written, scaling row i's blocks by
 // λ[b1] and λ[b2], λ indexed by body instead of by row. Where a body index is past the rows the
@@ -100,54 +97,17 @@ void PgsSolver::use_workers(Workers* workers) {
 }
 
 bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {
-  const std::vector<RowGroup>& groups = mlcp.groups();
-  const int group_count = static_cast<int>(groups.size()) - 1;
-  const long rows = mlcp.row_count();
-  if (rows < threaded_min_rows || !mlcp.friction_on_own_bodies()) return false;
-  // the parts: consecutive groups, each part about its share of the rows
-  part_of_group_.resize(static_cast<std::size_t>(group_count));
-  for (int g = 0; g < group_count; ++g) {
-    part_of_group_[g] = static_cast<int>(std::min<long>(parts - 1, groups[g].first * parts / rows));
+  if (mlcp.row_count() < threaded_min_rows || !mlcp.friction_on_own_bodies()) return false;
+  // the MLCPs solved in turn (a step's velocity and position MLCPs) each find their own plan
+  for (PartPlan& plan : plans_) {
+    if (!plan.made_for(mlcp, parts)) continue;
+    plan_ = &plan;
+    return plan.usable();
   }
-  part_first_.resize(static_cast<std::size_t>(parts) + 1);
-  for (int t = 0, g = 0; t <= parts; ++t) {
-    while (g < group_count && part_of_group_[g] < t) ++g;
-    part_first_[t] = g;
-  }
-  // the waits: the group before g on each of its bodies, this pass's or the last of the pass
-  // before, when another thread takes it
-  last_group_of_body_.assign(static_cast<std::size_t>(mlcp.body_count()), -1);
-  for (int g = 0; g < group_count; ++g) {
-    for (const int body : groups[g].bodies) {
-      if (body >= 0) last_group_of_body_[body] = g - group_count;  // in the pass before
-    }
-  }
-  group_waits_.assign(static_cast<std::size_t>(group_count), GroupWait{});
-  waited_on_.assign(static_cast<std::size_t>(group_count), 0);
-  int waits = 0;
-  for (int g = 0; g < group_count; ++g) {
-    GroupWait& wait = group_waits_[g];
-    for (int k = 0; k < 2; ++k) {
-      const int body = groups[g].bodies[k];
-      if (body < 0) continue;
-      const int before = last_group_of_body_[body];
-      last_group_of_body_[body] = g;
-      const int g_before = before < 0 ? before + group_count : before;
-      const int theirs = part_of_group_[g_before];
-      if (theirs == part_of_group_[g]) continue;
-      waited_on_[g_before] = 1;
-      ++waits;
-      if (k == 1 && wait.part[0] == theirs) {
-        wait.after[0] = std::max(wait.after[0], static_cast<long>(before) + 1);
-      } else {
-        wait.part[k] = theirs;
-        wait.after[k] = static_cast<long>(before) + 1;
-      }
-    }
-  }
-  // rows whose bodies are spread over the whole order (bodies added in no spatial order) would
-  // make the parts wait at every few groups: then one part is faster
-  return waits <= static_cast<long>(parts - 1) * group_count / max_wait_share;
+  PartPlan& older = plan_ == &plans_[0] ? plans_[1] : plans_[0];
+  plan_ = &older;
+  ++plans_made_;
+  return older.make(mlcp, parts);
 }
 
 // One Gauss-Seidel sweep over the rows, each λ_i projected onto its bounds, group by group.
@@ -180,7 +140,7 @@ template <int N, bool ClampIncrement>
                                                 Block<N>* a, double* lambda, int t,
                                                 long first_pass, int sweeps) const {
   const RowGroup* group = groups.data();
-  const GroupWait* waits = group_waits_.data();
+  const PartPlan::GroupWait* waits = plan_->waits();
   const long group_count = static_cast<long>(groups.size()) - 1;
   // each lane's part, its next pass k and group g, and its count k·G + g + 1 of the last group
   // passed (when the first pass is a sweep, pass 0 was done before); an empty lane is done
@@ -189,15 +149,15 @@ template <int N, bool ClampIncrement>
   std::array<int, 2> next{};
   std::array<long, 2> passed{};
   for (int u = 0; u < 2; ++u) {
-    next[u] = part_first_[part[u]];
-    passed[u] = (first_pass - 1) * group_count + part_first_[part[u] + 1];
-    if (part_first_[part[u]] == part_first_[part[u] + 1]) pass[u] = sweeps + 1;
+    next[u] = plan_->first_group(part[u]);
+    passed[u] = (first_pass - 1) * group_count + plan_->first_group(part[u] + 1);
+    if (plan_->first_group(part[u]) == plan_->first_group(part[u] + 1)) pass[u] = sweeps + 1;
   }
   std::array<long, 128> seen{};  // the last count read from each other part (64 threads at most)
   // 0: lane u's next group may go; −1: the lane is done; else the part it waits for, + 1
   const auto waits_for = [&](int u) {
     if (pass[u] > sweeps) return -1;
-    const GroupWait& wait = waits[next[u]];
+    const PartPlan::GroupWait& wait = waits[next[u]];
     for (int e = 0; e < 2; ++e) {
       const int v = wait.part[e];
       if (v < 0) continue;
@@ -223,9 +183,9 @@ template <int N, bool ClampIncrement>
   };
   const auto advance = [&](int u) {
     passed[u] = pass[u] * group_count + next[u] + 1;
-    if (progress_ != nullptr && waited_on_[next[u]]) progress_[part[u]].publish(passed[u]);
-    if (++next[u] == part_first_[part[u] + 1]) {
-      next[u] = part_first_[part[u]];
+    if (progress_ != nullptr && plan_->waited_on(next[u])) progress_[part[u]].publish(passed[u]);
+    if (++next[u] == plan_->first_group(part[u] + 1)) {
+      next[u] = plan_->first_group(part[u]);
       ++pass[u];
     }
   };

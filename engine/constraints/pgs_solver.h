@@ -19,6 +19,8 @@
 // the same bit for bit on any number of threads. Contact rows come in the order of their bodies'
 // indices, so in a scene built bottom up (a pyramid, a stack) a part shares bodies with the parts
 // next to it only along one cut, and the parts run as a wavefront, part p a little behind p − 1.
+// The cut and the waits (part_plan.h) are kept from solve to solve while the rows' groups stay
+// the same, as a resting pile's do.
 //
 // A thread's two parts are two lanes: its sweeps take a group of each lane at once where neither
 // waits on the other (pass_two_groups: their rows interleaved, two independent chains of
@@ -30,11 +32,13 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <vector>
 
 #include "constraints/mlcp.h"
+#include "constraints/part_plan.h"
 #include "constraints/sweep_settings.h"
 #include "motion/pitfalls.h"
 #include "parallel/workers.h"
@@ -90,20 +94,16 @@ class PgsSolver {
   bool swept_on_threads() const { return swept_on_threads_; }
   // Whether the last solve swept on one thread in two lanes (above).
   bool swept_in_lanes() const { return swept_in_lanes_; }
+  // How many times a plan of the parts has been made (PartPlan): once per MLCP whose groups
+  // differ from the last two planned.
+  long plans_made() const { return plans_made_; }
 
  private:
-  // Where the part (thread or lane) of a group waits before its pass k over it, for each of its
-  // bodies whose group before it (in the one-thread order) another part takes: until `part` has
-  // passed k·G + `after` (G groups a pass; `after` ≤ 0 for a group of the pass before).
-  struct GroupWait {
-    std::array<int, 2> part{-1, -1};
-    std::array<long, 2> after{0, 0};
-  };
-
   template <int N>
   std::vector<Block<N>>& a();
-  // The rows' groups cut into `parts` parts and the waits between them; false when they would
-  // wait too often (then one thread and one lane are faster).
+  // The rows' groups cut into `parts` parts and the waits between them (plan_, kept or made);
+  // false when the rows are too few or would wait too often (then one thread and one lane are
+  // faster).
   bool plan_parts(const Mlcp& mlcp, int parts);
   template <int N, bool ClampIncrement>
   void sweep(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
@@ -120,15 +120,13 @@ class PgsSolver {
   bool swept_in_lanes_ = false;
   std::vector<Block<3>> planar_a_;     // a in the planar layout
   std::vector<Block<6>> general_a_;    // a in the general layout
-  // Part t (a thread, or a lane) takes the groups (Mlcp::groups) [part_first_[t],
-  // part_first_[t + 1]).
   Workers* workers_ = nullptr;            // the threads, or none
   std::unique_ptr<Progress[]> progress_;  // per part: k·G + g + 1 once its pass k took group g
-  std::vector<int> part_first_;
-  std::vector<int> part_of_group_;        // the part that sweeps group g
-  std::vector<GroupWait> group_waits_;    // where group g waits
-  std::vector<unsigned char> waited_on_;  // another part waits for group g: publish it
-  std::vector<int> last_group_of_body_;   // scratch of plan_parts
+  // The plans of the last two MLCPs planned (a step's velocity and position MLCPs, solved in
+  // turn), and the one the current solve sweeps by.
+  std::array<PartPlan, 2> plans_;
+  const PartPlan* plan_ = nullptr;
+  long plans_made_ = 0;
 };
 
 // Solves the MLCP from the guess λ_exp (warm start) in a solver of its own; a caller solving

@@ -1,0 +1,83 @@
+#include "constraints/part_plan.h"
+
+#include <algorithm>
+#include <cstring>
+#include <type_traits>
+
+namespace lamina {
+namespace {
+
+// For each cut between two parts, at most one group in max_wait_share may wait on another part
+// (a pyramid of base 20 in 2 parts: one in 20); otherwise the parts would mostly wait on each
+// other.
+constexpr int max_wait_share = 8;
+
+}  // namespace
+
+bool PartPlan::made_for(const Mlcp& mlcp, int parts) const {
+  const std::vector<RowGroup>& groups = mlcp.groups();
+  if (parts != parts_ || mlcp.row_count() != rows_ || mlcp.body_count() != bodies_ ||
+      groups.size() != groups_.size()) {
+    return false;
+  }
+  // compared as bytes, a few thousand groups at a time: a RowGroup is its three ints, no padding
+  static_assert(std::has_unique_object_representations_v<RowGroup>);
+  return std::memcmp(groups.data(), groups_.data(), groups.size() * sizeof(RowGroup)) == 0;
+}
+
+bool PartPlan::make(const Mlcp& mlcp, int parts) {
+  const std::vector<RowGroup>& groups = mlcp.groups();
+  const int group_count = static_cast<int>(groups.size()) - 1;
+  const long rows = mlcp.row_count();
+  groups_ = groups;
+  rows_ = rows;
+  parts_ = parts;
+  bodies_ = mlcp.body_count();
+  // the parts: consecutive groups, each part about its share of the rows
+  part_of_group_.resize(static_cast<std::size_t>(group_count));
+  for (int g = 0; g < group_count; ++g) {
+    part_of_group_[g] = static_cast<int>(std::min<long>(parts - 1, groups[g].first * parts / rows));
+  }
+  part_first_.resize(static_cast<std::size_t>(parts) + 1);
+  for (int t = 0, g = 0; t <= parts; ++t) {
+    while (g < group_count && part_of_group_[g] < t) ++g;
+    part_first_[t] = g;
+  }
+  // the waits: the group before g on each of its bodies, this pass's or the last of the pass
+  // before, when another part takes it
+  last_group_of_body_.assign(static_cast<std::size_t>(mlcp.body_count()), -1);
+  for (int g = 0; g < group_count; ++g) {
+    for (const int body : groups[g].bodies) {
+      if (body >= 0) last_group_of_body_[body] = g - group_count;  // in the pass before
+    }
+  }
+  group_waits_.assign(static_cast<std::size_t>(group_count), GroupWait{});
+  waited_on_.assign(static_cast<std::size_t>(group_count), 0);
+  int waits = 0;
+  for (int g = 0; g < group_count; ++g) {
+    GroupWait& wait = group_waits_[g];
+    for (int k = 0; k < 2; ++k) {
+      const int body = groups[g].bodies[k];
+      if (body < 0) continue;
+      const int before = last_group_of_body_[body];
+      last_group_of_body_[body] = g;
+      const int g_before = before < 0 ? before + group_count : before;
+      const int theirs = part_of_group_[g_before];
+      if (theirs == part_of_group_[g]) continue;
+      waited_on_[g_before] = 1;
+      ++waits;
+      if (k == 1 && wait.part[0] == theirs) {
+        wait.after[0] = std::max(wait.after[0], static_cast<long>(before) + 1);
+      } else {
+        wait.part[k] = theirs;
+        wait.after[k] = static_cast<long>(before) + 1;
+      }
+    }
+  }
+  // rows whose bodies are spread over the whole order (bodies added in no spatial order) would
+  // make the parts wait at every few groups: then one part is faster
+  usable_ = waits <= static_cast<long>(parts - 1) * group_count / max_wait_share;
+  return usable_;
+}
+
+}  // namespace lamina

@@ -1,0 +1,54 @@
+// How PGS's rows are cut into parts (threads, or two lanes on one thread) and where each part
+// waits on another (pgs_solver.h): a pure function of the MLCP's groups (Mlcp::groups), its row
+// count and the number of parts. A plan is kept from solve to solve and made again only when one
+// of those changes: a pile at rest keeps its contact pairs, and so its groups, step after step.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "constraints/mlcp.h"
+
+namespace lamina {
+
+class PartPlan {
+ public:
+  // Where the part (thread or lane) of a group waits before its pass k over it, for each of its
+  // bodies whose group before it (in the one-thread order) another part takes: until `part` has
+  // passed k·G + `after` (G groups a pass; `after` ≤ 0 for a group of the pass before).
+  struct GroupWait {
+    std::array<int, 2> part{-1, -1};
+    std::array<long, 2> after{0, 0};
+  };
+
+  // Whether this plan was made for `mlcp`'s groups and row count in `parts` parts: then make()
+  // would make it again, the same.
+  bool made_for(const Mlcp& mlcp, int parts) const;
+  // Cuts the groups into `parts` parts of consecutive groups, each about its share of the rows,
+  // and finds the waits between them. Returns usable().
+  bool make(const Mlcp& mlcp, int parts);
+
+  // False when the parts would wait on each other too often (then one part is faster).
+  bool usable() const { return usable_; }
+  // Part t takes the groups [first_group(t), first_group(t + 1)).
+  int first_group(int part) const { return part_first_[static_cast<std::size_t>(part)]; }
+  const GroupWait* waits() const { return group_waits_.data(); }  // per group
+  // Whether another part waits for group g: then its part publishes its progress past it.
+  bool waited_on(int group) const { return waited_on_[static_cast<std::size_t>(group)] != 0; }
+
+ private:
+  // what the plan was made for
+  std::vector<RowGroup> groups_;
+  long rows_ = -1;
+  int parts_ = 0;
+  int bodies_ = 0;
+  // the plan
+  bool usable_ = false;
+  std::vector<int> part_first_;
+  std::vector<int> part_of_group_;        // the part that sweeps group g
+  std::vector<GroupWait> group_waits_;    // where group g waits
+  std::vector<unsigned char> waited_on_;  // another part waits for group g
+  std::vector<int> last_group_of_body_;   // scratch of make()
+};
+
+}  // namespace lamina
