@@ -75,14 +75,16 @@ struct BoxCandidates {
 std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, const Shape& box2,
                                        const Pose2& pose2, const CachedPoints& cached,
                                        const TieRule& ties) {
-  const std::array<Vec2, 4> corners1 = vertices_of(box1, pose1);
-  const std::array<Vec2, 4> corners2 = vertices_of(box2, pose2);
   // Separating axis test over both boxes' face normals: body 1's faces against body 2's
-  // vertices and the other way round.
-  const std::array<FaceTable, 2> tables{face_table(box1, pose1, corners2),
-                                        face_table(box2, pose2, corners1)};
-  const double separation = std::max(tables[0].separation, tables[1].separation);
-  if (separation > 0.0) return std::nullopt;  // a separating axis: apart (0 is touching)
+  // vertices and the other way round; a separating axis among body 1's faces ends it early.
+  const std::array<Vec2, 4> corners2 = vertices_of(box2, pose2);
+  const FaceTable table1 = face_table(box1, pose1, corners2);
+  if (table1.separation > 0.0) return std::nullopt;  // apart (0 is touching)
+  const std::array<Vec2, 4> corners1 = vertices_of(box1, pose1);
+  const FaceTable table2 = face_table(box2, pose2, corners1);
+  const double separation = std::max(table1.separation, table2.separation);
+  if (separation > 0.0) return std::nullopt;
+  const std::array<const FaceTable*, 2> tables{&table1, &table2};
 
   // Candidates: the incident vertices inside the reference box, trying both boxes as the
   // reference when their faces separate equally (a box resting half over another has one
@@ -90,7 +92,7 @@ std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, co
   const double tie_tolerance = ties.break_ties ? ties.tolerance : 0.0;
   const std::array<const std::array<Vec2, 4>*, 2> corners{&corners1, &corners2};
   const auto candidate = [&](int ref, int v) {
-    const FaceTable& table = tables[ref];
+    const FaceTable& table = *tables[ref];
     Collision c;
     c.point = (*corners[1 - ref])[v];
     c.depth = table.depth(v);
@@ -102,18 +104,18 @@ std::optional<Collision> collide_boxes(const Shape& box1, const Pose2& pose1, co
   };
   BoxCandidates candidates;
   for (int ref = 0; ref < 2; ++ref) {
-    if (tables[ref].separation < separation - tie_tolerance) continue;
+    if (tables[ref]->separation < separation - tie_tolerance) continue;
     for (int v = 0; v < 4; ++v) {
-      if (tables[ref].contains(v, containment_tolerance)) candidates.add(candidate(ref, v));
+      if (tables[ref]->contains(v, containment_tolerance)) candidates.add(candidate(ref, v));
     }
   }
   if (candidates.count == 0) {
     // Two boxes crossing like a plus sign overlap with no vertex inside the other: return the
     // incident vertex deepest past the separating-axis face.
-    const int ref = tables[0].separation >= tables[1].separation ? 0 : 1;
+    const int ref = table1.separation >= table2.separation ? 0 : 1;
     int deepest = 0;
     for (int v = 1; v < 4; ++v) {
-      if (tables[ref].depth(v) > tables[ref].depth(deepest)) deepest = v;
+      if (tables[ref]->depth(v) > tables[ref]->depth(deepest)) deepest = v;
     }
     return candidate(ref, deepest);
   }
