@@ -83,6 +83,8 @@ TEST_SUITE("SolverLab") {
     const std::vector<Island> one = find_islands(chained.velocity.mlcp, 0);
     REQUIRE(one.size() == 1);
     CHECK(one[0].joint_rows == chained.velocity.mlcp.row_count());
+    // a pin's rows are equalities, λ = p − m: two variables each in the exact solve's LCP
+    CHECK(one[0].lcp_size == 2 * chained.velocity.mlcp.row_count());
   }
 
   TEST_CASE("exact: each step's λ solves the step's MLCP, and equals pivoting on it") {

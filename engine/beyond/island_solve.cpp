@@ -20,11 +20,13 @@ IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Isl
   IslandSolve how = IslandSolve::pgs;
   // A state gone non-finite is left to PGS, which carries it into the bodies, where the run
   // that diverged is stopped and says so (first_non_finite_body); pivoting would refuse it.
-  bool finite = true;
-  for (int i = 0; i < own.row_count() && finite; ++i) {
-    finite = std::isfinite(own.eta(i)) && std::isfinite(own.d(i));
-  }
-  if (try_exact && finite && island.lcp_size <= exact_island_limit && has_exact_form(own)) {
+  const auto finite = [&] {
+    for (int i = 0; i < own.row_count(); ++i) {
+      if (!std::isfinite(own.eta(i)) || !std::isfinite(own.d(i))) return false;
+    }
+    return true;
+  };
+  if (try_exact && island.lcp_size <= exact_island_limit && finite() && has_exact_form(own)) {
     if (work.exact.solve(own) == LemkeStatus::solved) {
       for (int i = 0; i < own.row_count(); ++i) own_lambda[i] = work.exact.lambda()[i];
       how = IslandSolve::exact;
