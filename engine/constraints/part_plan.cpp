@@ -16,8 +16,7 @@ constexpr int max_wait_share = 8;
 
 bool PartPlan::made_for(const Mlcp& mlcp, int parts) const {
   const std::vector<RowGroup>& groups = mlcp.groups();
-  if (parts != parts_ || mlcp.row_count() != rows_ || mlcp.body_count() != bodies_ ||
-      groups.size() != groups_.size()) {
+  if (parts != parts_ || mlcp.row_count() != rows_ || groups.size() != groups_.size()) {
     return false;
   }
   // compared as bytes, a few thousand groups at a time: a RowGroup is its three ints, no padding
@@ -32,7 +31,6 @@ bool PartPlan::make(const Mlcp& mlcp, int parts) {
   groups_ = groups;
   rows_ = rows;
   parts_ = parts;
-  bodies_ = mlcp.body_count();
   // the parts: consecutive groups, each part about its share of the rows
   part_of_group_.resize(static_cast<std::size_t>(group_count));
   for (int g = 0; g < group_count; ++g) {
@@ -73,6 +71,15 @@ bool PartPlan::make(const Mlcp& mlcp, int parts) {
         wait.after[k] = static_cast<long>(before) + 1;
       }
     }
+  }
+  // the runs, from the last group back: a run from g ends after g when another part waits for g
+  // or g + 1 waits itself, else where the run from g + 1 ends
+  run_end_.resize(static_cast<std::size_t>(group_count));
+  for (int g = group_count - 1; g >= 0; --g) {
+    const bool next_waits = g + 1 < group_count && (group_waits_[g + 1].part[0] >= 0 ||
+                                                    group_waits_[g + 1].part[1] >= 0);
+    const bool stop = waited_on_[g] != 0 || next_waits || g + 1 == group_count;
+    run_end_[g] = stop ? g + 1 : run_end_[g + 1];
   }
   // rows whose bodies are spread over the whole order (bodies added in no spatial order) would
   // make the parts wait at every few groups: then one part is faster

@@ -33,6 +33,11 @@ class PartPlan {
   // Part t takes the groups [first_group(t), first_group(t + 1)).
   int first_group(int part) const { return part_first_[static_cast<std::size_t>(part)]; }
   const GroupWait* waits() const { return group_waits_.data(); }  // per group
+  // How far a part that may take group g may go on in one run, without looking at a wait: to
+  // the group after the first from g on that another part waits for (its part then publishes
+  // its progress), or to the first after g that waits itself, whichever comes first. Not cut at
+  // the part's end, which its caller knows.
+  int run_end(int group) const { return run_end_[static_cast<std::size_t>(group)]; }
   // Whether another part waits for group g: then its part publishes its progress past it.
   bool waited_on(int group) const { return waited_on_[static_cast<std::size_t>(group)] != 0; }
 
@@ -41,14 +46,15 @@ class PartPlan {
   std::vector<RowGroup> groups_;
   long rows_ = -1;
   int parts_ = 0;
-  int bodies_ = 0;
   // the plan
   bool usable_ = false;
   std::vector<int> part_first_;
-  std::vector<int> part_of_group_;        // the part that sweeps group g
   std::vector<GroupWait> group_waits_;    // where group g waits
   std::vector<unsigned char> waited_on_;  // another part waits for group g
-  std::vector<int> last_group_of_body_;   // scratch of make()
+  std::vector<int> run_end_;              // per group, run_end()
+  // scratch of make(): the part that sweeps group g, the last group met on each body
+  std::vector<int> part_of_group_;
+  std::vector<int> last_group_of_body_;
 };
 
 }  // namespace lamina

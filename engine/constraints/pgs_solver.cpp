@@ -128,12 +128,15 @@ template <int N, bool ClampIncrement>
 // Passes `first_pass` to `sweeps` over the groups of parts 2t and 2t + 1, taken as two lanes
 // (pass 0 is a = B λ, passes 1, 2, … the sweeps). Each lane goes as far as its waits allow: on
 // the other lane, through the lanes' own counts of groups passed; on another thread's part,
-// through that part's Progress. Each step takes the next group of each lane that may go, both
-// side by side where both can (pass_two_groups). Lane 2t + 1 starts once the groups its first
-// groups share bodies with have been passed (about a pass of the part before it), then the two
-// go side by side. Some lane can always go, or will once another thread has got further: the
-// first of all the parts' next groups in the one-thread order has every group before it on its
-// bodies behind it.
+// through that part's Progress. A lane's wait is looked at only where a run of its groups starts
+// (PartPlan::run_end: a group that waits starts a run, and a run ends after a group that
+// another part waits for); the groups after the first of a run wait on no other part. Each step
+// takes the next run of each lane that may go, both side by side as far as the shorter goes
+// where both can (pass_two_groups). Lane 2t + 1 starts once the groups its first groups share
+// bodies with have been passed (about a pass of the part before it), then the two go side by
+// side. Some lane can always go, or will once another thread has got further: the first of all
+// the parts' next groups in the one-thread order has every group before it on its bodies behind
+// it.
 template <int N, bool ClampIncrement>
 [[gnu::flatten]] void PgsSolver::sweep_in_lanes(const PackedRows<N>& rows,
                                                 const std::vector<RowGroup>& groups,
@@ -171,20 +174,29 @@ template <int N, bool ClampIncrement>
     }
     return 0;
   };
-  const auto take = [&](int u) {  // lane u's next group, alone
-    const int g = next[u];
-    if (pass[u] == 0) {
-      pass_group<N, ClampIncrement, Pass::transpose>(rows.data(), group[g].first,
-                                                     group[g + 1].first, a, lambda);
-    } else {
-      pass_group<N, ClampIncrement, Pass::sweep>(rows.data(), group[g].first, group[g + 1].first,
-                                                 a, lambda);
+  // lane u's next run of groups (PartPlan::run_end), cut at its part's end: the first may wait,
+  // the others need not be looked at
+  const auto run_length = [&](int u) {
+    return std::min(plan_->run_end(next[u]), plan_->first_group(part[u] + 1)) - next[u];
+  };
+  const auto take = [&](int u, int n) {  // lane u's next n groups, alone
+    for (int g = next[u]; g < next[u] + n; ++g) {
+      if (pass[u] == 0) {
+        pass_group<N, ClampIncrement, Pass::transpose>(rows.data(), group[g].first,
+                                                       group[g + 1].first, a, lambda);
+      } else {
+        pass_group<N, ClampIncrement, Pass::sweep>(rows.data(), group[g].first,
+                                                   group[g + 1].first, a, lambda);
+      }
     }
   };
-  const auto advance = [&](int u) {
-    passed[u] = pass[u] * group_count + next[u] + 1;
-    if (progress_ != nullptr && plan_->waited_on(next[u])) progress_[part[u]].publish(passed[u]);
-    if (++next[u] == plan_->first_group(part[u] + 1)) {
+  const auto advance = [&](int u, int n) {  // lane u has passed its next n groups
+    next[u] += n;
+    passed[u] = pass[u] * group_count + next[u];
+    if (progress_ != nullptr && plan_->waited_on(next[u] - 1)) {
+      progress_[part[u]].publish(passed[u]);  // only its last group may be waited for
+    }
+    if (next[u] == plan_->first_group(part[u] + 1)) {
       next[u] = plan_->first_group(part[u]);
       ++pass[u];
     }
@@ -196,10 +208,21 @@ template <int N, bool ClampIncrement>
     const bool go0 = wait0 == 0;
     const bool go1 = wait1 == 0;
     if (go0 && go1 && pass[0] > 0 && pass[1] > 0) {
-      pass_two_groups<N, ClampIncrement>(rows.data(), group, next[0], next[1], a, lambda);
+      // the two runs side by side, as far as the shorter goes
+      const int n = std::min(run_length(0), run_length(1));
+      for (int k = 0; k < n; ++k) {
+        pass_two_groups<N, ClampIncrement>(rows.data(), group, next[0] + k, next[1] + k, a,
+                                           lambda);
+      }
+      advance(0, n);
+      advance(1, n);
     } else if (go0 || go1) {
-      if (go0) take(0);
-      if (go1) take(1);
+      for (int u = 0; u < 2; ++u) {
+        if (u == 0 ? !go0 : !go1) continue;
+        const int n = run_length(u);
+        take(u, n);
+        advance(u, n);
+      }
     } else {
       // both wait, one at least on another thread's part (else the plan is wrong): look at
       // both again after a moment. Not waiting on that part alone: it may be waiting, in turn,
@@ -213,8 +236,6 @@ template <int N, bool ClampIncrement>
       continue;
     }
     waiting_turns = 0;
-    if (go0) advance(0);
-    if (go1) advance(1);
   }
 }
 

@@ -24,11 +24,13 @@
 //
 // A thread's two parts are two lanes: its sweeps take a group of each lane at once where neither
 // waits on the other (pass_two_groups: their rows interleaved, two independent chains of
-// arithmetic that the processor overlaps), and a group alone where one does. On one thread the
-// same plan with two parts gives the one thread two lanes. The rows of one lane still follow each
-// other, and each group still comes after every group before it on its bodies, so λ is again the
-// one-thread λ bit for bit; a sweep is bound by the latency of each row's chain (the dot product,
-// the clamp, the update of a), and two chains at once take little longer than one.
+// arithmetic that the processor overlaps), and a group alone where one does; the waits are
+// looked at once per run of groups that cannot wait (PartPlan::run_end), not once per group.
+// On one thread the same plan with two parts gives the one thread two lanes. The rows of one
+// lane still follow each other, and each group still comes after every group before it on its
+// bodies, so λ is again the one-thread λ bit for bit; a sweep is bound by the latency of each
+// row's chain (the dot product, the clamp, the update of a), and two chains at once take little
+// longer than one.
 #pragma once
 
 #include <algorithm>
