@@ -11,6 +11,7 @@
 #include "beyond/methods.h"
 #include "constraints/jacobian_rows.h"
 #include "constraints/revolute_joint.h"
+#include "contact/contact_cache.h"
 #include "contact/world.h"
 
 using namespace lamina;
@@ -339,6 +340,35 @@ TEST_SUITE("World") {
     CHECK(report.velocity.mlcp.row_count() == 3);  // two contact rows, the manifold's friction row
     CHECK(report.position.mlcp.row_count() == 2);  // split impulse: one row per contact
     CHECK(report.time == doctest::Approx(5.0 / 60.0).epsilon(1e-12));
+  }
+
+  TEST_CASE("a kept point is re-anchored once its anchors slide apart by more than drift_limit") {
+    // A box's corner on the ground's top face (y = 0), found fresh, then the box slid along x
+    // by s with no fresh point: the ground's anchor stays put for s below drift_limit and moves
+    // under the corner (x = −0.5 + s) above it. 10 % on either side of the limit, so the test
+    // does not depend on how the limit is compared.
+    const std::vector<Shape> shapes{Shape::box(5.0, 0.5), Shape::box(0.5, 0.5)};
+    const std::vector<Material> materials(2);
+    CacheSettings settings;
+    for (const double share : {0.9, 1.1}) {
+      CAPTURE(share);
+      const double s = share * settings.drift_limit;
+      ContactCache cache;
+      std::vector<Pose2> poses{Pose2{Vec2(0.0, -0.5)}, Pose2{Vec2(0.0, 0.5)}};
+      Collision corner;
+      corner.point = Vec2(-0.5, 0.0);  // the box's corner, depth 0, on the ground's face
+      cache.update({FreshCollision{BodyPair{0, 1}, corner}}, poses, shapes, materials, settings);
+      REQUIRE(cache.pairs().size() == 1);
+      CHECK(cache.pairs()[0].contacts[0].anchor[0] == Vec2(-0.5, 0.5));  // ground frame
+      poses[1].x.x() += s;
+      cache.update({}, poses, shapes, materials, settings);
+      REQUIRE(cache.pairs().size() == 1);
+      const Contact& kept = cache.pairs()[0].contacts[0];
+      CHECK(kept.origin == ContactOrigin::kept);
+      // re-anchored: −0.5 + s, exact to a rounding of the sum
+      CHECK(kept.anchor[0].x() == doctest::Approx(share > 1.0 ? -0.5 + s : -0.5).epsilon(1e-15));
+      CHECK(kept.anchor[0].y() == 0.5);
+    }
   }
 
   TEST_CASE("bad settings and bodies out of the plane are refused with a message") {

@@ -46,14 +46,26 @@ struct FaceTable {
 FaceTable face_table(const Shape& box, const Pose2& pose, const std::array<Vec2, 4>& others) {
   FaceTable table;
   table.faces = faces_of(box, pose);
+  // the other box's vertices from this box's centre, v − x_r, as a row of x and a row of y, so
+  // that each face's four products go two at a time
+  std::array<double, 4> dx;
+  std::array<double, 4> dy;
+  for (int v = 0; v < 4; ++v) {
+    dx[v] = others[v].x() - pose.x.x();
+    dy[v] = others[v].y() - pose.x.y();
+  }
+  for (int f = 0; f < 4; ++f) {
+    const double nx = table.faces[f].normal.x();
+    const double ny = table.faces[f].normal.y();
+    const double h = table.faces[f].offset;
+    // s[f][v] = n_f · (v − x_r) − h_f
+    for (int v = 0; v < 4; ++v) table.s[f][v] = (nx * dx[v] + ny * dy[v]) - h;
+  }
   table.separation = -std::numeric_limits<double>::infinity();
   for (int f = 0; f < 4; ++f) {
+    // s_f = min over the other box's vertices
     double s_f = std::numeric_limits<double>::infinity();
-    for (int v = 0; v < 4; ++v) {
-      // s_f = min over the other box's vertices of n_f · (v − x_r) − h_f
-      table.s[f][v] = table.faces[f].normal.dot(others[v] - pose.x) - table.faces[f].offset;
-      s_f = std::min(s_f, table.s[f][v]);
-    }
+    for (int v = 0; v < 4; ++v) s_f = std::min(s_f, table.s[f][v]);
     if (s_f > table.separation) {
       table.best = f;
       table.separation = s_f;

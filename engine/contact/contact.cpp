@@ -45,7 +45,7 @@ void place(Contact& contact, const Pose2& pose1, const Pose2& pose2) {
   contact.normal = pose_of(contact.reference, pose1, pose2).R * contact.local_normal;
   // eq. 4-1: C = (x2 + r2 − x1 − r1) · n1
   contact.separation = (p2 - p1).dot(contact.normal);
-  contact.drift = ((p2 - p1) - contact.separation * contact.normal).norm();
+  contact.drift_squared = ((p2 - p1) - contact.separation * contact.normal).squaredNorm();
   contact.point = 0.5 * (p1 + p2);
 }
 

@@ -39,7 +39,7 @@ struct Contact {
   Vec2 point = Vec2::Zero();          // c, midway between the two surface points, world, in m
   Vec2 normal = Vec2::UnitY();        // n, world, unit, body 1 → body 2
   double separation = 0.0;            // C of eq. 4-1, in m; −depth when penetrating
-  double drift = 0.0;                 // |(p2 − p1) − C n|, how far the anchors slid apart, in m
+  double drift_squared = 0.0;         // |(p2 − p1) − C n|², the anchors' slide apart, in m²
   ContactOrigin origin = ContactOrigin::fresh;  // how this step got it (above)
 
   // Where its rows sit in this step's MLCP, recorded when they are written (the row map):
@@ -66,7 +66,7 @@ struct ContactPair {
 Contact make_contact(const Collision& collision, const Pose2& pose1, const Pose2& pose2);
 
 // Re-places a contact from its anchors at the bodies' current poses and re-measures it:
-// point, normal, separation (eq. 4-1) and drift.
+// point, normal, separation (eq. 4-1) and drift (squared: compared, never shown).
 void place(Contact& contact, const Pose2& pose1, const Pose2& pose2);
 
 // The point c = (p1 + p2)/2 of a contact re-placed from its anchors (eq. 5-12), without the

@@ -33,7 +33,8 @@ void refresh(ContactPair& pair, const std::vector<Pose2>& poses, const std::vect
     Contact c = pair.contacts[k];
     place(c, pose1, pose2);
     c.origin = ContactOrigin::kept;
-    if (settings.reanchor && c.drift > settings.drift_limit) {
+    // |drift| > drift_limit, compared squared (no square root for every kept point)
+    if (settings.reanchor && c.drift_squared > settings.drift_limit * settings.drift_limit) {
       reanchor(c, pose1, pose2);
       const int ref_body = c.reference == 0 ? pair.bodies.first : pair.bodies.second;
       if (!contains(shapes[ref_body], poses[ref_body], reference_point(c, pose1, pose2),
