@@ -151,7 +151,9 @@ void write_pair_rows(ContactPair& pair, const std::vector<RigidBody>& bodies,
       // the manifold's middle and normal; its contact rows are a.row and a.row + 1
       const Vec2 middle = 0.5 * (a.point + b.point);
       const Vec2 sum = a.normal + b.normal;  // opposite normals cannot share a tangent
-      const Vec2 normal = sum.norm() > 1e-9 ? Vec2(sum.normalized()) : a.normal;
+      const double length = sum.norm();
+      // sum / |sum|: Eigen's normalized(), without taking the root a second time
+      const Vec2 normal = length > 1e-9 ? Vec2(sum / length) : a.normal;
       const RowEnds at_middle =
           ends_at_point(bodies, pair.bodies.first, pair.bodies.second, lift(middle));
       a.friction_rows[t] = b.friction_rows[t] =
