@@ -31,16 +31,23 @@ bool PartPlan::make(const Mlcp& mlcp, int parts) {
   groups_ = groups;
   rows_ = rows;
   parts_ = parts;
-  // the parts: consecutive groups, each part about its share of the rows
-  part_of_group_.resize(static_cast<std::size_t>(group_count));
-  for (int g = 0; g < group_count; ++g) {
-    part_of_group_[g] = static_cast<int>(std::min<long>(parts - 1, groups[g].first * parts / rows));
-  }
+  // the parts: consecutive groups, each part about its share of the rows; part t starts at the
+  // first group whose first row r has min(parts − 1, r·parts/rows) ≥ t (r grows with g)
+  const auto part_of_row = [&](long first) {
+    return std::min<long>(parts - 1, first * parts / rows);
+  };
   part_first_.resize(static_cast<std::size_t>(parts) + 1);
-  for (int t = 0, g = 0; t <= parts; ++t) {
-    while (g < group_count && part_of_group_[g] < t) ++g;
-    part_first_[t] = g;
+  for (int t = 0; t <= parts; ++t) {
+    const auto starts = std::partition_point(
+        groups.begin(), groups.begin() + group_count,
+        [&](const RowGroup& group) { return part_of_row(group.first) < t; });
+    part_first_[t] = static_cast<int>(starts - groups.begin());
   }
+  // the part of group g, looked up only where a group's body was last met in another part
+  const auto part_of = [&](int g) {
+    return static_cast<int>(std::upper_bound(part_first_.begin(), part_first_.end(), g) -
+                            part_first_.begin()) - 1;
+  };
   // the waits: the group before g on each of its bodies, this pass's or the last of the pass
   // before, when another part takes it
   last_group_of_body_.assign(static_cast<std::size_t>(mlcp.body_count()), -1);
@@ -52,7 +59,8 @@ bool PartPlan::make(const Mlcp& mlcp, int parts) {
   group_waits_.assign(static_cast<std::size_t>(group_count), GroupWait{});
   waited_on_.assign(static_cast<std::size_t>(group_count), 0);
   int waits = 0;
-  for (int g = 0; g < group_count; ++g) {
+  for (int g = 0, part = 0; g < group_count; ++g) {
+    while (g >= part_first_[part + 1]) ++part;
     GroupWait& wait = group_waits_[g];
     for (int k = 0; k < 2; ++k) {
       const int body = groups[g].bodies[k];
@@ -60,8 +68,8 @@ bool PartPlan::make(const Mlcp& mlcp, int parts) {
       const int before = last_group_of_body_[body];
       last_group_of_body_[body] = g;
       const int g_before = before < 0 ? before + group_count : before;
-      const int theirs = part_of_group_[g_before];
-      if (theirs == part_of_group_[g]) continue;
+      if (g_before >= part_first_[part] && g_before < part_first_[part + 1]) continue;  // its own
+      const int theirs = part_of(g_before);
       waited_on_[g_before] = 1;
       ++waits;
       if (k == 1 && wait.part[0] == theirs) {

@@ -52,9 +52,7 @@ class PartPlan {
   std::vector<GroupWait> group_waits_;    // where group g waits
   std::vector<unsigned char> waited_on_;  // another part waits for group g
   std::vector<int> run_end_;              // per group, run_end()
-  // scratch of make(): the part that sweeps group g, the last group met on each body
-  std::vector<int> part_of_group_;
-  std::vector<int> last_group_of_body_;
+  std::vector<int> last_group_of_body_;   // scratch of make(): the last group met on each body
 };
 
 }  // namespace lamina
