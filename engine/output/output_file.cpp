@@ -1,7 +1,11 @@
 #include "output/output_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <system_error>
 
 namespace lamina {
@@ -72,23 +76,59 @@ void TemporaryFile::fail(const std::string& why) {
 }
 
 OutputFile::OutputFile(fs::path path) : file_(std::move(path)) {
-  out_.open(file_.temporary(), std::ios::binary | std::ios::trunc);
-  if (!out_) throw cannot_write(file_.path(), std::strerror(errno));
+  descriptor_ = ::open(file_.temporary().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (descriptor_ < 0) throw cannot_write(file_.path(), std::strerror(errno));
+}
+
+OutputFile::~OutputFile() {
+  if (descriptor_ >= 0) ::close(descriptor_);
 }
 
 void OutputFile::write(std::string_view text) {
-  out_.write(text.data(), static_cast<std::streamsize>(text.size()));
-  if (!out_) fail(std::strerror(errno));
+  reserve_for(text.size());
+  const char* next = text.data();
+  std::size_t left = text.size();
+  while (left > 0) {
+    const ssize_t written = ::write(descriptor_, next, left);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) fail(written < 0 ? std::strerror(errno) : "nothing written");
+    next += written;
+    left -= static_cast<std::size_t>(written);
+  }
+  size_ += text.size();
+}
+
+// Space for `size` more bytes, reserved ahead once the file is written in more than one piece
+// (a file written whole, such as a frame, reserves nothing). The reservation is only a help: a
+// file system that refuses it (one without fallocate, a full disk) is not asked again, and
+// the write itself says whether the bytes fit.
+void OutputFile::reserve_for(std::size_t size) {
+#if defined(__linux__)
+  if (size_ == 0 || size_ + size <= reserved_ || !can_reserve_) return;
+  const std::uint64_t end = size_ + size + reserve_block;
+  const auto from = static_cast<off_t>(size_);
+  const auto length = static_cast<off_t>(end - size_);
+  can_reserve_ = ::fallocate(descriptor_, FALLOC_FL_KEEP_SIZE, from, length) == 0;
+  if (can_reserve_) reserved_ = end;
+#else
+  (void)size;
+#endif
 }
 
 void OutputFile::commit() {
-  out_.close();
-  if (!out_) fail(std::strerror(errno));
+  // The space reserved past the end is given back: the file holds what was written.
+  if (reserved_ > size_ && ::ftruncate(descriptor_, static_cast<off_t>(size_)) != 0) {
+    fail(std::strerror(errno));
+  }
+  const int closed = ::close(descriptor_);
+  descriptor_ = -1;
+  if (closed != 0) fail(std::strerror(errno));
   file_.commit();
 }
 
 void OutputFile::fail(const std::string& why) {
-  out_.close();
+  if (descriptor_ >= 0) ::close(descriptor_);
+  descriptor_ = -1;
   file_.fail(why);
 }
 
