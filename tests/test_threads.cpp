@@ -147,6 +147,26 @@ TEST_SUITE("Threads") {
     }
   }
 
+  TEST_CASE("a team spins only when each of its threads can have a core of its own") {
+    // A larger team waits sleeping: spinning, a thread without a core holds up the one it waits
+    // for by a time slice (golden scenes on 3 threads of 2 cores: 100 times slower).
+    const int cores = machine_cores();
+    REQUIRE(cores >= 1);  // Linux gives the process's CPU affinity
+    CHECK(cores <= static_cast<int>(std::thread::hardware_concurrency()));
+    CHECK(Workers(1).spins());
+    CHECK(Workers(std::min(cores, 64)).spins());
+    if (cores < 64) {
+      Workers larger(cores + 1);
+      CHECK_FALSE(larger.spins());
+      // and it works all the same: each share once, sleeping between the runs
+      std::vector<int> ran(static_cast<std::size_t>(cores + 1), 0);
+      for (int round = 0; round < 20; ++round) {
+        larger.run([&](int t) { ++ran[static_cast<std::size_t>(t)]; });
+      }
+      CHECK(std::count(ran.begin(), ran.end(), 20) == cores + 1);
+    }
+  }
+
   TEST_CASE("an exception in a worker's share reaches the caller, and the team goes on") {
     Workers workers(2);
     CHECK_THROWS_AS(workers.run([](int t) {
@@ -177,7 +197,7 @@ TEST_SUITE("Threads") {
         }
       } else {
         for (long i = 0; i < static_cast<long>(data.size()); ++i) {
-          for (int turns = 0; progress.value() < i + 1;) wait_a_turn(turns);
+          for (int turns = 0; progress.value() < i + 1;) workers.wait_a_turn(turns);
           if (data[static_cast<std::size_t>(i)] != i) ++mismatches;
         }
       }

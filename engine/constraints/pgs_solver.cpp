@@ -232,7 +232,7 @@ template <int N, bool ClampIncrement>
       if (!on_other_thread || progress_ == nullptr) {
         throw std::logic_error("PGS's two lanes both wait on each other: their plan is wrong");
       }
-      wait_a_turn(waiting_turns);
+      workers_->wait_a_turn(waiting_turns);
       continue;
     }
     waiting_turns = 0;

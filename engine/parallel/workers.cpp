@@ -1,5 +1,7 @@
 #include "parallel/workers.h"
 
+#include <sched.h>
+
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -14,6 +16,8 @@ Workers::Workers(int threads) {
   if (threads < 1 || threads > 64) {
     throw std::invalid_argument("threads must be 1 to 64, got " + std::to_string(threads));
   }
+  const int cores = machine_cores();
+  spins_ = cores == 0 || threads <= cores;
   failures_.resize(static_cast<std::size_t>(threads));
   threads_.reserve(static_cast<std::size_t>(threads - 1));
   for (int t = 1; t < threads; ++t) threads_.emplace_back([this, t] { serve(t); });
@@ -60,7 +64,8 @@ bool spin_until(Done&& done, KeepSpinning&& keep_spinning) {
 
 }  // namespace
 
-Workers::Awake::Awake(Workers* workers) : workers_(workers) {
+Workers::Awake::Awake(Workers* workers)
+    : workers_(workers != nullptr && workers->spins() ? workers : nullptr) {
   if (workers_ == nullptr) return;
   workers_->awake_.fetch_add(1);
   {
@@ -91,7 +96,7 @@ void Workers::run_erased(void* task, void (*call)(void*, int)) {
   }
   if (!threads_.empty()) {
     const auto finished = [this] { return pending_.load(std::memory_order_acquire) == 0; };
-    if (!spin_until(finished, [] { return true; })) {
+    if (!spins_ || !spin_until(finished, [] { return true; })) {
       std::unique_lock<std::mutex> lock(mutex_);
       done_.wait(lock, finished);
     }
@@ -112,7 +117,7 @@ void Workers::serve(int t) {
       return stopping_.load() || generation_.load(std::memory_order_acquire) != seen;
     };
     const auto kept_awake = [this] { return awake_.load(std::memory_order_relaxed) > 0; };
-    while (!spin_until(woken, kept_awake)) {
+    while (!spins_ || !spin_until(woken, kept_awake)) {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [&] { return woken() || kept_awake(); });
       if (woken()) break;
@@ -131,6 +136,13 @@ void Workers::serve(int t) {
   }
 }
 
+int machine_cores() {
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) return CPU_COUNT(&allowed);
+  return static_cast<int>(std::thread::hardware_concurrency());  // 0: not known
+}
+
 std::pair<std::size_t, std::size_t> share_of(std::size_t count, int part, int parts) {
   const std::size_t n = static_cast<std::size_t>(parts);
   const std::size_t k = static_cast<std::size_t>(part);
@@ -140,9 +152,9 @@ std::pair<std::size_t, std::size_t> share_of(std::size_t count, int part, int pa
   return {first, first + base + (k < longer ? 1 : 0)};
 }
 
-void wait_a_turn(int& turns) {
+void Workers::wait_a_turn(int& turns) const {
   constexpr int pauses = 4096;
-  if (turns < pauses) {
+  if (spins_ && turns < pauses) {
     cpu_pause();
     ++turns;
   } else {

@@ -29,11 +29,22 @@ class Workers {
   Workers& operator=(const Workers&) = delete;
 
   int count() const { return static_cast<int>(threads_.size()) + 1; }
+  // Whether the threads wait for each other spinning (a team no larger than the machine's
+  // cores), or else sleeping: a spinning thread without a core of its own keeps the core from
+  // the thread it waits for, and a step took a hundred times as long (docs/performance.md, "Two
+  // threads").
+  bool spins() const { return spins_; }
 
-  // While one is alive, the threads wait for their next piece of work spinning instead of
-  // sleeping: a step hands them several pieces with a little serial work between, and waking a
-  // sleeping thread costs tens of microseconds (more when its virtual CPU has gone idle). A
-  // World keeps one for each step. Nullptr: nothing.
+  // One turn of a wait that looks again after each (a Progress's value, or several): a pause of
+  // the core for the first few thousand turns, then the core yielded to other threads (the
+  // thread waited on may have lost its core on a busy machine); yielded at once when the team
+  // does not spin. `turns` counts the turns, from 0, and stops counting once they yield.
+  void wait_a_turn(int& turns) const;
+
+  // While one is alive, the threads of a team that spins wait for their next piece of work
+  // spinning instead of sleeping: a step hands them several pieces with a little serial work
+  // between, and waking a sleeping thread costs tens of microseconds (more when its virtual CPU
+  // has gone idle). A World keeps one for each step. Nullptr, or a team that sleeps: nothing.
   class Awake {
    public:
     explicit Awake(Workers* workers);
@@ -67,6 +78,7 @@ class Workers {
   std::atomic<int> pending_{0};           // workers still running the current task
   std::atomic<bool> stopping_{false};     // the destructor asks the workers to leave
   std::atomic<int> awake_{0};             // Awake objects alive: spin, do not sleep
+  bool spins_ = true;                     // no more threads than cores (machine_cores())
   void* task_ = nullptr;                  // the current task and how to call it
   void (*call_)(void*, int) = nullptr;
   std::vector<std::exception_ptr> failures_;  // per thread, what its share threw
@@ -152,10 +164,7 @@ class alignas(64) Progress {
   std::atomic<long> value_{0};
 };
 
-// One turn of a wait that looks again after each (a Progress's value, or several): a pause of
-// the core for the first few thousand turns, then the core yielded to other threads (the thread
-// waited on may have lost its core on a busy machine). `turns` counts the turns, from 0, and
-// stops counting once they yield.
-void wait_a_turn(int& turns);
+// The cores this process may run on (its CPU affinity), 0 when not known.
+int machine_cores();
 
 }  // namespace lamina

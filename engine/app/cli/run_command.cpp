@@ -2,7 +2,6 @@
 
 #include <iostream>
 #include <memory>
-#include <thread>
 
 #include "app/cli/exit_codes.h"
 #include "app/cli/frame_recording.h"
@@ -15,6 +14,7 @@
 #include "app/harness/viewer.h"
 #include "app/views/contact/world_explanation.h"
 #include "motion/pitfalls.h"
+#include "parallel/workers.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
 
@@ -33,12 +33,12 @@ WorldSettings run_settings(const RunOptions& o, Scene& scene) {
   return settings;
 }
 
-// More threads than the machine's cores take the same steps, far slower: a step's threads wait
-// for each other spinning, and a thread without a core keeps the others waiting for its turn
+// More threads than the machine's cores take the same steps, slower: a step's threads then
+// wait for each other sleeping, and each piece of the step waits for a thread to be woken
 // (docs/performance.md, "Two threads"). Said on stderr; the run goes on.
 void note_threads_beyond_cores(int threads) {
-  const unsigned cores = std::thread::hardware_concurrency();  // 0: not known
-  if (cores == 0 || static_cast<unsigned>(threads) <= cores) return;
+  const int cores = machine_cores();  // 0: not known
+  if (cores == 0 || threads <= cores) return;
   std::cerr << "lamina: note: --threads " << threads << " on a machine of " << cores
             << " cores is slower than --threads " << cores << " (the same state bit for bit)\n";
 }
