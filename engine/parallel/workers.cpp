@@ -16,8 +16,7 @@ Workers::Workers(int threads) {
   if (threads < 1 || threads > 64) {
     throw std::invalid_argument("threads must be 1 to 64, got " + std::to_string(threads));
   }
-  const int cores = machine_cores();
-  spins_ = cores == 0 || threads <= cores;
+  spins_ = fits_cores(threads);
   failures_.resize(static_cast<std::size_t>(threads));
   threads_.reserve(static_cast<std::size_t>(threads - 1));
   for (int t = 1; t < threads; ++t) threads_.emplace_back([this, t] { serve(t); });
@@ -141,6 +140,11 @@ int machine_cores() {
   CPU_ZERO(&allowed);
   if (sched_getaffinity(0, sizeof allowed, &allowed) == 0) return CPU_COUNT(&allowed);
   return static_cast<int>(std::thread::hardware_concurrency());  // 0: not known
+}
+
+bool fits_cores(int threads) {
+  const int cores = machine_cores();
+  return cores == 0 || threads <= cores;
 }
 
 std::pair<std::size_t, std::size_t> share_of(std::size_t count, int part, int parts) {

@@ -166,5 +166,8 @@ class alignas(64) Progress {
 
 // The cores this process may run on (its CPU affinity), 0 when not known.
 int machine_cores();
+// Whether a team of `threads` has a core for each thread (true when the cores are not known):
+// a Workers of that many spins while it waits.
+bool fits_cores(int threads);
 
 }  // namespace lamina

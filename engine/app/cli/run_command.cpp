@@ -37,8 +37,8 @@ WorldSettings run_settings(const RunOptions& o, Scene& scene) {
 // wait for each other sleeping, and each piece of the step waits for a thread to be woken
 // (docs/performance.md, "Two threads"). Said on stderr; the run goes on.
 void note_threads_beyond_cores(int threads) {
-  const int cores = machine_cores();  // 0: not known
-  if (cores == 0 || threads <= cores) return;
+  if (fits_cores(threads)) return;
+  const int cores = machine_cores();
   std::cerr << "lamina: note: --threads " << threads << " on a machine of " << cores
             << " cores is slower than --threads " << cores << " (the same state bit for bit)\n";
 }
