@@ -57,10 +57,10 @@ class IslandMethod final : public StepMethod {
     const double beta = problem.settings.step.beta;
     // The island's rows, numbered from 0; a friction row's contact row renumbered with them.
     rows_.clear();
-    local_of_.assign(problem.rows.size(), -1);
+    local_of_.assign(static_cast<std::size_t>(problem.velocity.row_count()), -1);
     for (const int r : island.rows) {
       local_of_[static_cast<std::size_t>(r)] = static_cast<int>(rows_.size());
-      rows_.push_back(problem.rows[static_cast<std::size_t>(r)]);
+      rows_.push_back(problem.velocity.row(r));
     }
     for (ConstraintRow& row : rows_) {
       if (row.friction_of >= 0) row.friction_of = local_of_[static_cast<std::size_t>(row.friction_of)];

@@ -25,9 +25,10 @@ Block<3> convert<3>(const RigidBody& body, const Block<3>& block) {
 
 // Packs row i of the MLCP, in place (packed rows keep their memory from step to step): its J
 // and B blocks, η_i, 1/d_i, ζ_i and bounds. N = 3 asks the row and its bodies to lie in the
-// plane (J's and B's v_z, ω_x, ω_y zero); its numbers are then those of N = 6, cut.
+// plane (J's and B's v_z, ω_x, ω_y zero); its numbers are then those of N = 6, cut. Always
+// inlined into its two callers (called, 0.5 M more instructions a step of pyramid:20).
 template <int N>
-void pack_row(const std::vector<RigidBody>& bodies, const ConstraintRow& row,
+[[gnu::always_inline]] inline void pack_row(const std::vector<RigidBody>& bodies, const ConstraintRow& row,
               const std::vector<Vec6>& unconstrained, double dt, PackedRow<N>& packed) {
   assert(row.Jmap[0] >= 0 && row.Jmap[0] != row.Jmap[1]);  // one or two bodies, never the same
   packed.map = row.Jmap;
@@ -47,12 +48,7 @@ void pack_row(const std::vector<RigidBody>& bodies, const ConstraintRow& row,
   const double j_u = row_dot<N>(packed.J, u0, two ? cut<N>(unconstrained[row.Jmap[1]]) : u0, two);
   // eq. 3-16: η = ζ/Δt − J (V/Δt + M⁻¹ F_ext)
   packed.eta = row.zeta / dt - j_u;
-  packed.zeta = row.zeta;
-  packed.lambda_min = row.lambda_min;
-  packed.lambda_max = row.lambda_max;
-  packed.friction_of = row.friction_of;
-  packed.friction_count = row.friction_count;
-  packed.mu = row.mu;
+  copy_row_scalars(row, packed);
 }
 
 // Whether a body's I⁻¹ turns the z axis into itself, so that B = M⁻¹ Jᵀ of a row in the plane
@@ -78,12 +74,6 @@ bool on_own_bodies(const std::array<int, 2>& map, int friction_of, int count, st
     if (static_cast<std::size_t>(contact) >= i || !same_bodies(map_at(contact), map)) return false;
   }
   return true;
-}
-
-template <int N>
-const PackedRow<N>& row_at(const PackedRows<N>& rows, int i) {
-  assert(i >= 0 && i < static_cast<int>(rows.size()));
-  return rows[static_cast<std::size_t>(i)];
 }
 
 }  // namespace
@@ -132,63 +122,184 @@ double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodi
 }
 
 template <class Pack>
-void Mlcp::pack_in_runs(std::size_t count, Workers* workers, Pack&& pack) {
+void Mlcp::pack_in_runs(std::size_t first, std::size_t count, Workers* workers, Pack&& pack) {
   const int runs = runs_on(workers);
   groups_of_run_.resize(runs);
   friction_own_in_run_.assign(static_cast<std::size_t>(runs), 1);
   const auto pack_run = [&](int t) {
-    const auto [first, last] = share_of(count, t, runs);
+    const auto [begin, end] = share_of(count, t, runs);
     std::vector<RowGroup>& groups = groups_of_run_[t];
     groups.clear();
-    for (std::size_t i = first; i < last; ++i) {
+    for (std::size_t i = first + begin; i < first + end; ++i) {
       if (!pack(i, groups)) friction_own_in_run_[t] = 0;
     }
   };
   run_on(workers, pack_run);
-  groups_.clear();
-  friction_on_own_bodies_ = true;
   for (int t = 0; t < runs; ++t) {
-    groups_.insert(groups_.end(), groups_of_run_[t].begin(), groups_of_run_[t].end());
+    add_groups(groups_of_run_[t]);
     friction_on_own_bodies_ = friction_on_own_bodies_ && friction_own_in_run_[t] != 0;
   }
-  groups_.push_back({static_cast<int>(count), {-1, -1}});
+}
+
+void Mlcp::add_groups(const std::vector<RowGroup>& groups) {
+  auto from = groups.begin();
+  if (from != groups.end() && !groups_.empty() && same_bodies(groups_.back().bodies, from->bodies)) {
+    ++from;
+  }
+  groups_.insert(groups_.end(), from, groups.end());
+}
+
+namespace {
+
+// Whether a row and its bodies' I⁻¹ keep to the plane, so that it can be packed in the planar
+// layout. Inlined: looked at for every row a step writes.
+[[gnu::always_inline]] inline bool row_in_plane(const ConstraintRow& row, const std::vector<unsigned char>& inertia_in_plane) {
+  return in_plane(row.Jsp[0]) && in_plane(row.Jsp[1]) && inertia_in_plane[row.Jmap[0]] &&
+         (row.is_one_body() || inertia_in_plane[row.Jmap[1]]);
+}
+
+// A run of the rows a RowWriter writes, packed as they come into packed rows from `first` on:
+// the groups that start in the run, and whether each friction row has its contact rows before
+// it on its own bodies in the run (a contact's always do). For N = 3, a row out of the plane
+// stops the packing (in_plane() false: the rows are then packed again in the general layout).
+template <int N>
+class PackingSink final : public RowSink {
+ public:
+  PackingSink(int first, PackedRows<N>& packed, const std::vector<RigidBody>& bodies,
+              const std::vector<unsigned char>& inertia_in_plane,
+              const std::vector<Vec6>& unconstrained, double dt, std::vector<RowGroup>& groups)
+      : RowSink(first), first_(first), packed_(packed), bodies_(bodies),
+        inertia_in_plane_(inertia_in_plane), unconstrained_(unconstrained), dt_(dt),
+        groups_(groups) {}
+
+  void put(const ConstraintRow* rows, int count) override {
+    for (int k = 0; k < count; ++k, ++next_) {
+      const ConstraintRow& row = rows[k];
+      if constexpr (N == 3) in_plane_ = in_plane_ && row_in_plane(row, inertia_in_plane_);
+      if (!in_plane_) continue;
+      pack_row<N>(bodies_, row, unconstrained_, dt_, packed_[static_cast<std::size_t>(next_)]);
+      if (groups_.empty() || !same_bodies(row.Jmap, groups_.back().bodies)) {
+        groups_.push_back({next_, row.Jmap});
+      }
+      // a row of another run may not be packed yet: one bounded by it is taken as not own
+      own_ = own_ && on_own_bodies(row.Jmap, row.friction_of, row.friction_count,
+                                   static_cast<std::size_t>(next_), [&](int c) {
+                                     return c >= first_ ? packed_[static_cast<std::size_t>(c)].map
+                                                        : std::array<int, 2>{-2, -2};
+                                   });
+    }
+  }
+  bool in_plane() const { return in_plane_; }
+  bool friction_on_own_bodies() const { return own_; }
+
+ private:
+  int first_;
+  PackedRows<N>& packed_;
+  const std::vector<RigidBody>& bodies_;
+  const std::vector<unsigned char>& inertia_in_plane_;
+  const std::vector<Vec6>& unconstrained_;
+  double dt_;
+  std::vector<RowGroup>& groups_;
+  bool in_plane_ = true;
+  bool own_ = true;
+};
+
+// No rows: the writer of the assembly of a vector of rows alone.
+class NoRows final : public RowWriter {
+ public:
+  std::size_t count(int /*t*/, int /*runs*/) override { return 0; }
+  void begin(std::size_t /*total*/) override {}
+  void write(int /*t*/, int /*runs*/, RowSink& /*sink*/) override {}
+};
+
+}  // namespace
+
+template <int N>
+bool Mlcp::pack_written(PackedRows<N>& packed, const std::vector<RigidBody>& bodies,
+                        RowWriter& written, const RunStarts& starts,
+                        const std::vector<Vec6>& unconstrained, double dt, Workers* workers) {
+  const int runs = runs_on(workers);
+  groups_of_run_.resize(runs);
+  friction_own_in_run_.assign(static_cast<std::size_t>(runs), 1);
+  planar_in_run_.assign(static_cast<std::size_t>(runs), 1);
+  run_on(workers, [&](int t) {
+    std::vector<RowGroup>& groups = groups_of_run_[t];
+    groups.clear();
+    PackingSink<N> sink(static_cast<int>(starts[static_cast<std::size_t>(t)]), packed, bodies,
+                        inertia_in_plane_, unconstrained, dt, groups);
+    written.write(t, runs, sink);
+    // the writer wrote what it counted
+    assert(static_cast<std::size_t>(sink.next()) == starts[static_cast<std::size_t>(t) + 1]);
+    planar_in_run_[static_cast<std::size_t>(t)] = sink.in_plane();
+    friction_own_in_run_[static_cast<std::size_t>(t)] = sink.friction_on_own_bodies();
+  });
+  for (int t = 0; t < runs; ++t) {
+    if (planar_in_run_[static_cast<std::size_t>(t)] == 0) return false;
+  }
+  for (int t = 0; t < runs; ++t) {
+    add_groups(groups_of_run_[t]);
+    friction_on_own_bodies_ = friction_on_own_bodies_ && friction_own_in_run_[t] != 0;
+  }
+  return true;
 }
 
 void Mlcp::assemble(const std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
                     const std::vector<Vec6>& unconstrained, double dt, Workers* workers) {
-  // the layout: planar when every row and every body's I⁻¹ keep to the plane (each run of the
-  // workers checks its bodies, then its rows)
-  inertia_in_plane_.resize(bodies.size());
+  NoRows none;
+  assemble(bodies, none, rows, unconstrained, dt, workers);
+}
+
+void Mlcp::assemble(const std::vector<RigidBody>& bodies, RowWriter& written,
+                    const std::vector<ConstraintRow>& rows, const std::vector<Vec6>& unconstrained,
+                    double dt, Workers* workers) {
   const int runs = runs_on(workers);
+  const RunStarts starts = run_starts(workers, [&](int t) { return written.count(t, runs); });
+  const std::size_t first = starts[static_cast<std::size_t>(runs)];  // the first of `rows`
+  written.begin(first);
+  // the layout: planar when every row and every body's I⁻¹ keep to the plane (each run of the
+  // workers checks its bodies, then its share of `rows`; the written rows as they are packed)
+  inertia_in_plane_.resize(bodies.size());
   planar_in_run_.assign(static_cast<std::size_t>(runs), 1);
   const auto check_bodies = [&](int t) {
     const auto [first_body, last_body] = share_of(bodies.size(), t, runs);
     for (size_t b = first_body; b < last_body; ++b) inertia_in_plane_[b] = inertia_in_plane(bodies[b]);
   };
   const auto check_rows = [&](int t) {
-    const auto [first, last] = share_of(rows.size(), t, runs);
-    planar_in_run_[t] = std::all_of(rows.begin() + first, rows.begin() + last, [&](const ConstraintRow& row) {
-      return in_plane(row.Jsp[0]) && in_plane(row.Jsp[1]) && inertia_in_plane_[row.Jmap[0]] &&
-             (row.is_one_body() || inertia_in_plane_[row.Jmap[1]]);
-    });
+    const auto [begin, end] = share_of(rows.size(), t, runs);
+    planar_in_run_[t] = std::all_of(rows.begin() + begin, rows.begin() + end,
+                                    [&](const ConstraintRow& row) { return row_in_plane(row, inertia_in_plane_); });
   };
   run_on(workers, check_bodies);
   run_on(workers, check_rows);
   planar_ = std::all_of(planar_in_run_.begin(), planar_in_run_.end(), [](unsigned char p) { return p != 0; });
   body_count_ = static_cast<int>(bodies.size());
+  groups_.clear();
+  friction_on_own_bodies_ = true;
+  const std::size_t total = first + rows.size();
+  if (planar_) {
+    planar_rows_.resize(total);
+    planar_ = pack_written(planar_rows_, bodies, written, starts, unconstrained, dt, workers);
+  }
+  if (!planar_) {
+    general_rows_.resize(total);
+    pack_written(general_rows_, bodies, written, starts, unconstrained, dt, workers);
+  }
   visit_mutable([&](auto& packed) {
-    packed.resize(rows.size());
-    pack_in_runs(rows.size(), workers, [&](std::size_t i, std::vector<RowGroup>& groups) {
-      pack_row(bodies, rows[i], unconstrained, dt, packed[i]);
+    pack_in_runs(first, rows.size(), workers, [&](std::size_t i, std::vector<RowGroup>& groups) {
+      const ConstraintRow& row = rows[i - first];
+      pack_row(bodies, row, unconstrained, dt, packed[i]);
       // the groups and the friction rows' bodies, from the rows as written (read-only: a row
-      // of another run may not be packed yet)
-      if (i == 0 || !same_bodies(rows[i].Jmap, rows[i - 1].Jmap)) {
-        groups.push_back({static_cast<int>(i), rows[i].Jmap});
+      // of another run may not be packed yet) or as packed before them
+      if (i == first || !same_bodies(row.Jmap, rows[i - first - 1].Jmap)) {
+        groups.push_back({static_cast<int>(i), row.Jmap});
       }
-      return on_own_bodies(rows[i].Jmap, rows[i].friction_of, rows[i].friction_count, i,
-                           [&](int k) { return rows[k].Jmap; });
+      return on_own_bodies(row.Jmap, row.friction_of, row.friction_count, i, [&](int k) {
+        const std::size_t at = static_cast<std::size_t>(k);
+        return at >= first ? rows[at - first].Jmap : packed[at].map;
+      });
     });
   });
+  groups_.push_back({static_cast<int>(total), {-1, -1}});
 }
 
 template <class Finish>
@@ -196,9 +307,11 @@ void Mlcp::select_rows(const Mlcp& from, const std::vector<int>& rows, Workers* 
                        Finish&& finish) {
   planar_ = from.planar_;
   body_count_ = from.body_count_;
+  groups_.clear();
+  friction_on_own_bodies_ = true;
   auto select = [&](const auto& source, auto& packed) {
     packed.resize(rows.size());
-    pack_in_runs(rows.size(), workers, [&](std::size_t i, std::vector<RowGroup>& groups) {
+    pack_in_runs(0, rows.size(), workers, [&](std::size_t i, std::vector<RowGroup>& groups) {
       const auto& row = source[static_cast<std::size_t>(rows[i])];
       packed[i] = row;
       if (i == 0 || !same_bodies(row.map, source[static_cast<std::size_t>(rows[i - 1])].map)) {
@@ -220,6 +333,7 @@ void Mlcp::select_rows(const Mlcp& from, const std::vector<int>& rows, Workers* 
   } else {
     select(from.general_rows_, general_rows_);
   }
+  groups_.push_back({static_cast<int>(rows.size()), {-1, -1}});
 }
 
 void Mlcp::assemble_subset(const Mlcp& from, const std::vector<int>& rows, Workers* workers) {
@@ -235,151 +349,6 @@ void Mlcp::assemble_rows_of(const Mlcp& from, const std::vector<int>& rows,
   });
 }
 
-int Mlcp::row_count() const {
-  return visit([](const auto& rows) { return static_cast<int>(rows.size()); });
-}
-
-std::array<int, 2> Mlcp::bodies_of(int i) const {
-  return visit([&](const auto& rows) { return row_at(rows, i).map; });
-}
-
-Vec6 Mlcp::jacobian(int i, int k) const {
-  return visit([&](const auto& rows) { return widen(row_at(rows, i).J[k]); });
-}
-
-Vec6 Mlcp::b_block(int i, int k) const {
-  return visit([&](const auto& rows) { return widen(row_at(rows, i).B[k]); });
-}
-
-double Mlcp::zeta(int i) const {
-  return visit([&](const auto& rows) { return row_at(rows, i).zeta; });
-}
-
-double Mlcp::eta(int i) const {
-  return visit([&](const auto& rows) { return row_at(rows, i).eta; });
-}
-
-double Mlcp::d(int i) const {
-  // d_i = J_i · B_i, as assembled
-  return visit([&](const auto& rows) {
-    const auto& row = row_at(rows, i);
-    return row_dot(row.J, row.B[0], row.B[1], true);
-  });
-}
-
-int Mlcp::friction_of(int i) const {
-  return visit([&](const auto& rows) { return row_at(rows, i).friction_of; });
-}
-
-int Mlcp::friction_count(int i) const {
-  return visit([&](const auto& rows) { return row_at(rows, i).friction_count; });
-}
-
-double Mlcp::mu(int i) const {
-  return visit([&](const auto& rows) { return row_at(rows, i).mu; });
-}
-
-std::array<double, 2> Mlcp::bounds(int i, const double* lambda) const {
-  return visit([&](const auto& rows) { return bounds_of(row_at(rows, i), lambda); });
-}
-
-Eigen::VectorXd Mlcp::slack(const double* lambda) const {
-  return visit([&](const auto& rows) {
-    constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
-    std::vector<Block<N>> a;
-    transpose_multiply(rows, body_count_, lambda, a);
-    Eigen::VectorXd w(static_cast<Eigen::Index>(rows.size()));
-    // eq. 3-23: W = J B λ − η
-    for (size_t i = 0; i < rows.size(); ++i) w[static_cast<Eigen::Index>(i)] = row_dot(rows[i], a) - rows[i].eta;
-    return w;
-  });
-}
-
-double Mlcp::residual(const double* lambda) const {
-  const Eigen::VectorXd w = slack(lambda);
-  double sum = 0.0;
-  for (Eigen::Index i = 0; i < w.size(); ++i) {
-    const auto [lo, hi] = bounds(static_cast<int>(i), lambda);
-    // eq. 3-24: W = 0 inside the bounds, W ≥ 0 at λ⁻, W ≤ 0 at λ⁺
-    double violation = w[i];
-    if (lambda[i] <= lo) violation = std::min(w[i], 0.0);
-    if (lambda[i] >= hi) violation = std::max(w[i], 0.0);
-    if (lo == hi) violation = 0.0;
-    sum += violation * violation;
-  }
-  return std::sqrt(sum);
-}
-
-double Mlcp::row_times(int i, const std::vector<Vec6>& per_body) const {
-  return visit([&](const auto& rows) {
-    constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
-    const auto& row = row_at(rows, i);
-    const Block<N> x0 = cut<N>(per_body[row.map[0]]);
-    return row_dot<N>(row.J, x0, row.two_bodies() ? cut<N>(per_body[row.map[1]]) : x0,
-                      row.two_bodies());
-  });
-}
-
-namespace {
-
-// Adds λ J_b to body b's force and torque: all six components, or v_x, v_y, ω_z in the plane.
-void add_wrench(RigidBody& body, double lambda, const Block<6>& J) {
-  body.force += lambda * J.head<3>();
-  body.torque += lambda * J.tail<3>();
-}
-void add_wrench(RigidBody& body, double lambda, const Block<3>& J) {
-  body.force.x() += lambda * J[0];
-  body.force.y() += lambda * J[1];
-  body.torque.z() += lambda * J[2];
-}
-
-}  // namespace
-
-void Mlcp::add_constraint_forces(std::vector<RigidBody>& bodies, const double* lambda,
-                                 Workers* workers) const {
-  const int runs = runs_on(workers);
-  if (runs == 1) {
-    visit([&](const auto& rows) {
-      // eq. 3-11: F_c = Jᵀ λ
-      for_each_force(rows, lambda, [&](int body, double l, const auto& J) {
-        add_wrench(bodies[body], l, J);
-      });
-    });
-    return;
-  }
-  // Each run adds to its share of the bodies only (the share each run integrates), taking the
-  // groups that touch them in row order: every body's sum in the one-thread order.
-  run_on(workers, [&](int t) {
-    const std::pair<std::size_t, std::size_t> share = share_of(bodies.size(), t, runs);
-    const std::size_t first = share.first;  // named, not bound: a lambda may not capture a binding
-    const std::size_t last = share.second;
-    const auto own = [&](int body) {
-      return body >= 0 && static_cast<std::size_t>(body) >= first && static_cast<std::size_t>(body) < last;
-    };
-    visit([&](const auto& rows) {
-      for (std::size_t g = 0; g + 1 < groups_.size(); ++g) {
-        const std::array<int, 2> pair = groups_[g].bodies;
-        if (!own(pair[0]) && !own(pair[1])) continue;
-        // eq. 3-11: F_c = Jᵀ λ, this run's blocks of it
-        for_each_force(rows, lambda, groups_[g].first, groups_[g + 1].first,
-                       [&](int body, double l, const auto& J) {
-                         if (own(body)) add_wrench(bodies[body], l, J);
-                       });
-      }
-    });
-  });
-}
-
-Vec6 Mlcp::constraint_wrench(int body, const double* lambda) const {
-  Vec6 wrench = Vec6::Zero();
-  visit([&](const auto& rows) {
-    // eq. 3-11, 5-9: body b's block of F_c = Jᵀ λ
-    for_each_force(rows, lambda, [&](int b, double l, const auto& J) {
-      if (b == body) wrench += l * widen(J);
-    });
-  });
-  return wrench;
-}
 
 Mlcp assemble_mlcp(const std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
                    double dt) {

@@ -47,6 +47,34 @@ struct RowGroup {
   std::array<int, 2> bodies{-1, -1};  // Jmap of its rows
 };
 
+// Where rows go as they are written: a vector of ConstraintRows (the text's form), or an MLCP
+// being assembled, which packs each row as it comes (Mlcp::assemble with a RowWriter) so that
+// a step's many contact rows are never stored twice.
+class RowSink {
+ public:
+  virtual ~RowSink() = default;
+  // Takes `count` rows, in order: they become rows next() … next() + count − 1.
+  virtual void put(const ConstraintRow* rows, int count) = 0;
+  int next() const { return next_; }  // the index the next row put gets
+
+ protected:
+  explicit RowSink(int first) : next_(first) {}
+  int next_;
+};
+
+// Rows written in runs, straight into a sink: run t of `runs` writes its rows after those of
+// the runs before it. count(t, runs) and then write(t, runs, sink) are called on run t's thread
+// (a team's, or the calling thread for one run), begin(total) once between, on the calling
+// thread. write may be called again for all the runs (an MLCP that finds a row out of the plane
+// packs the rows again in the general layout): it writes the same rows again.
+class RowWriter {
+ public:
+  virtual ~RowWriter() = default;
+  virtual std::size_t count(int t, int runs) = 0;  // how many rows run t writes
+  virtual void begin(std::size_t total) = 0;         // all the runs' rows: `total`
+  virtual void write(int t, int runs, RowSink& sink) = 0;
+};
+
 class Mlcp {
  public:
   // Assembles the MLCP of eq. 3-16 for the rows, `unconstrained` being each body's
@@ -54,6 +82,12 @@ class Mlcp {
   // `workers`, each of their threads packs a run of the rows (each row's numbers are its own).
   void assemble(const std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,
                 const std::vector<Vec6>& unconstrained, double dt, Workers* workers = nullptr);
+  // The same for the rows `written` writes, packed as it writes them (with `workers`, each of
+  // their threads writes and packs a run of them), then `rows`: the MLCP of the rows of both,
+  // in that order, as the first assemble would make it of them in one vector.
+  void assemble(const std::vector<RigidBody>& bodies, RowWriter& written,
+                const std::vector<ConstraintRow>& rows, const std::vector<Vec6>& unconstrained,
+                double dt, Workers* workers = nullptr);
   // Some rows of another MLCP on the same bodies, each asking a new ζ of bodies that start from
   // rest under no force: rows[i] of `from` becomes row i with ζ_i = zeta[i], η_i = ζ_i / Δt
   // (split impulse's position rows are the velocity MLCP's contact rows: J, B, d and the bounds
@@ -76,7 +110,8 @@ class Mlcp {
   // always do): then an order kept per body orders the friction bounds too.
   bool friction_on_own_bodies() const { return friction_on_own_bodies_; }
 
-  // The text's form of row i:
+  // The text's form of row i: as a ConstraintRow, and its parts one by one.
+  ConstraintRow row(int i) const;             // Jsp, Jmap, ζ, the bounds and friction
   std::array<int, 2> bodies_of(int i) const;  // Jmap: body indices, [1] = −1 for a one-body row
   Vec6 jacobian(int i, int k) const;          // Jsp[i][k], [v ω]; zero for a missing body
   Vec6 b_block(int i, int k) const;           // Bsp[i][k] = M⁻¹ J_iᵀ's block (Convert)
@@ -115,11 +150,21 @@ class Mlcp {
   decltype(auto) visit_mutable(F&& f) {
     return planar_ ? f(planar_rows_) : f(general_rows_);
   }
-  // Packs rows 0 .. count − 1 by pack(i, groups), in runs on the workers' threads (or one run),
-  // each run noting the groups that start in it; pack returns whether a friction row i has its
-  // contact rows before it on its own bodies. Then joins the runs' groups in order.
+  // Packs rows first .. first + count − 1 by pack(i, groups), in runs on the workers' threads
+  // (or one run), each run noting the groups that start in it; pack returns whether a friction
+  // row i has its contact rows before it on its own bodies. Then adds the runs' groups in order
+  // (add_groups).
   template <class Pack>
-  void pack_in_runs(std::size_t count, Workers* workers, Pack&& pack);
+  void pack_in_runs(std::size_t first, std::size_t count, Workers* workers, Pack&& pack);
+  // The rows `written` writes, packed in the layout of N as they are written, in runs; false
+  // when one of them does not lie in the plane that N = 3 asks for.
+  template <int N>
+  bool pack_written(PackedRows<N>& packed, const std::vector<RigidBody>& bodies,
+                    RowWriter& written, const RunStarts& starts,
+                    const std::vector<Vec6>& unconstrained, double dt, Workers* workers);
+  // Adds a run's groups to groups_ in order: its first group joins the last one added when both
+  // are on the same bodies (a run that starts amid a run of rows on the same bodies).
+  void add_groups(const std::vector<RowGroup>& groups);
   // Rows of `from` copied as rows 0 .. rows.size() − 1 (assemble_subset), each then handed to
   // finish(row, i) while it is at hand (assemble_rows_of sets its ζ and η).
   template <class Finish>

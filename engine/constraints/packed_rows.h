@@ -33,6 +33,18 @@ struct PackedRowScalars {
   bool two_bodies() const { return map[1] >= 0; }
 };
 
+// The scalars a ConstraintRow (constraint_row.h) and a packed row both hold, copied from one
+// to the other: ζ, the fixed bounds, and a friction row's contact rows and μ.
+template <class From, class To>
+void copy_row_scalars(const From& from, To& to) {
+  to.zeta = from.zeta;
+  to.lambda_min = from.lambda_min;
+  to.lambda_max = from.lambda_max;
+  to.friction_of = from.friction_of;
+  to.friction_count = from.friction_count;
+  to.mu = from.mu;
+}
+
 template <int N>
 struct PackedRow : PackedRowScalars {
   static constexpr int size = N;  // components per block

@@ -158,10 +158,9 @@ void ContactCache::merge_run(std::vector<ContactPair>::const_iterator cached,
   }
 }
 
-void ContactCache::write_rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,
-                              const StepSettings& step, std::vector<ConstraintRow>& rows,
-                              std::vector<double>& lambda, Workers* workers) {
-  add_contact_rows(pairs_, bodies, settings, step, rows, lambda, workers);
+ContactRows ContactCache::rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,
+                               const StepSettings& step, std::vector<double>& lambda) {
+  return ContactRows(pairs_, bodies, settings, step, lambda);
 }
 
 void ContactCache::store_lambdas(const double* lambda, Workers* workers) {

@@ -60,12 +60,11 @@ class ContactCache {
               const std::vector<Shape>& shapes, const std::vector<Material>& materials,
               const CacheSettings& settings, Workers* workers = nullptr);
 
-  // Makes `rows` the rows of its pairs and `lambda` their warm-start λ, recording where each
-  // pair's and each contact's rows went (contact_rows.h, add_contact_rows), on `workers`'
-  // threads if given.
-  void write_rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,
-                  const StepSettings& step, std::vector<ConstraintRow>& rows,
-                  std::vector<double>& lambda, Workers* workers = nullptr);
+  // The writer of its pairs' rows and of their warm-start λ into `lambda`, which records where
+  // each pair's and each contact's rows went as it writes them (contact_rows.h, ContactRows):
+  // Mlcp::assemble runs it.
+  ContactRows rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,
+                   const StepSettings& step, std::vector<double>& lambda);
   // Keeps each contact's solved λ, read from its rows, as its warm start for the next step (on
   // `workers`' threads if given).
   void store_lambdas(const double* lambda, Workers* workers = nullptr);

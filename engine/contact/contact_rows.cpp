@@ -16,22 +16,27 @@ namespace {
 // A row as ConstraintRow's defaults make it: each row written starts as a copy of it.
 const ConstraintRow blank_row;
 
-// Where a run of pairs writes its rows and their warm-start λ: from `next` on, into vectors
-// already sized for every run's rows.
-struct RowSlots {
-  std::vector<ConstraintRow>& rows;
-  std::vector<double>& lambda;
-  int next = 0;
+// A pair's rows as they are written, before they go to the sink together: at most two contact
+// rows and, per contact, a friction row along each of two tangents.
+struct PairRows {
+  static constexpr int most = 6;
+  std::array<ConstraintRow, most> rows;
+  int first = 0;  // the index rows[0] gets among all the rows
+  int count = 0;  // rows written
+  double* lambda = nullptr;  // every row's warm-start λ, by index
+
+  ConstraintRow& at(int index) { return rows[static_cast<std::size_t>(index - first)]; }
 };
 
-// Writes the point row of direction u at the ends' contact point, with its λ_exp, in the next
-// slot; returns its index.
-int append_row(RowSlots& slots, const RowEnds& ends, const Vec3& u, double lambda_exp) {
-  const int index = slots.next++;
-  ConstraintRow& row = slots.rows[static_cast<std::size_t>(index)];
+// Writes the point row of direction u at the ends' contact point, with its λ_exp, as the pair's
+// next row; returns its index.
+int append_row(PairRows& slots, const RowEnds& ends, const Vec3& u, double lambda_exp) {
+  assert(slots.count < PairRows::most);
+  const int index = slots.first + slots.count++;
+  ConstraintRow& row = slots.at(index);
   row = blank_row;
   write_point_row(ends, u, row);
-  slots.lambda[static_cast<std::size_t>(index)] = lambda_exp;
+  slots.lambda[index] = lambda_exp;
   return index;
 }
 
@@ -83,10 +88,10 @@ int rows_of_pair(const ContactPair& pair, const ContactSettings& settings) {
 
 // Appends a friction row along u at the ends' point, bounded by ±μ times the λ of `count`
 // contact rows from `contact_row` (eq. 3-26, λc read from them during the iterations).
-int append_friction_row(RowSlots& slots, const ContactPair& pair, const RowEnds& ends,
+int append_friction_row(PairRows& slots, const ContactPair& pair, const RowEnds& ends,
                         const Vec3& u, int contact_row, int count, double lambda_exp) {
   const int index = append_row(slots, ends, u, lambda_exp);
-  ConstraintRow& row = slots.rows[static_cast<std::size_t>(index)];
+  ConstraintRow& row = slots.at(index);
   row.friction_of = contact_row;
   row.friction_count = count;
   row.mu = pair.friction;
@@ -96,14 +101,13 @@ int append_friction_row(RowSlots& slots, const ContactPair& pair, const RowEnds&
 // The pitfall crude-friction: the pair's friction rows [first, last) bounded by ±μ m g per
 // point they hold, m the mass of the moving body the contact holds up (the second, or the first
 // when the second is static), whatever the normal force λc is: the text's cruder bound.
-void crude_friction_bounds(std::vector<ConstraintRow>& rows, int first, int last,
-                           const ContactPair& pair, const std::vector<RigidBody>& bodies,
-                           const StepSettings& step) {
+void crude_friction_bounds(PairRows& slots, int first, int last, const ContactPair& pair,
+                           const std::vector<RigidBody>& bodies, const StepSettings& step) {
   const RigidBody& second = bodies[static_cast<std::size_t>(pair.bodies.second)];
   const RigidBody& held = second.is_static() ? bodies[static_cast<std::size_t>(pair.bodies.first)] : second;
   const double per_point = pair.friction * held.mass * step.gravity.norm();
-  for (std::size_t i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(last); ++i) {
-    ConstraintRow& row = rows[i];
+  for (int i = first; i < last; ++i) {
+    ConstraintRow& row = slots.at(i);
     const double bound = per_point * row.friction_count;
     row.friction_of = -1;
     row.friction_count = 1;
@@ -127,22 +131,22 @@ void validate(const ContactSettings& s) {
 
 namespace {
 
-// Writes one pair's rows into the next slots and records where they went.
+// Writes one pair's rows into `slots` (from its `first` on) and records where they went.
 void write_pair_rows(ContactPair& pair, const std::vector<RigidBody>& bodies,
-                     const ContactSettings& settings, const StepSettings& step, RowSlots& slots) {
-  pair.rows.first = slots.next;
+                     const ContactSettings& settings, const StepSettings& step, PairRows& slots) {
+  slots.count = 0;
+  pair.rows.first = slots.first;
   std::array<RowEnds, 2> ends;
   for (int k = 0; k < pair.count; ++k) {
     Contact& contact = pair.contacts[k];
     // r1 = c − x1, r2 = c − x2
     ends[k] = ends_at_point(bodies, pair.bodies.first, pair.bodies.second, lift(contact.point));
     contact.row = append_row(slots, ends[k], lift(contact.normal), contact.lambda_normal);
-    write_contact_row(slots.rows[static_cast<std::size_t>(contact.row)], pair, contact, bodies,
-                      settings, step);
+    write_contact_row(slots.at(contact.row), pair, contact, bodies, settings, step);
   }
   for (int k = 0; k < pair.count; ++k) pair.contacts[k].friction_rows = {-1, -1};
   const int tangents = friction_rows_per_contact(pair, settings);
-  const int first_friction_row = slots.next;
+  const int first_friction_row = slots.first + slots.count;
   const bool one_row = settings.friction == FrictionRows::per_manifold && pair.count == 2;
   for (int t = 0; t < tangents; ++t) {
     if (one_row) {
@@ -169,9 +173,9 @@ void write_pair_rows(ContactPair& pair, const std::vector<RigidBody>& bodies,
     }
   }
   if (step.pitfalls.has(Pitfall::crude_friction)) {
-    crude_friction_bounds(slots.rows, first_friction_row, slots.next, pair, bodies, step);
+    crude_friction_bounds(slots, first_friction_row, slots.first + slots.count, pair, bodies, step);
   }
-  pair.rows.count = slots.next - pair.rows.first;
+  pair.rows.count = slots.count;
 }
 
 // Keeps a pair's solved λ in its contacts (store_contact_lambdas).
@@ -196,32 +200,68 @@ void store_pair_lambdas(ContactPair& pair, const double* lambda) {
 
 }  // namespace
 
+ContactRows::ContactRows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
+                         const ContactSettings& settings, const StepSettings& step,
+                         std::vector<double>& lambda)
+    : pairs_(pairs), bodies_(bodies), settings_(settings), step_(step), lambda_(lambda) {}
+
+std::size_t ContactRows::count(int t, int runs) {
+  const auto [first, last] = share_of(pairs_.size(), t, runs);
+  std::size_t count = 0;
+  for (std::size_t p = first; p < last; ++p) {
+    count += static_cast<std::size_t>(rows_of_pair(pairs_[p], settings_));
+  }
+  return count;
+}
+
+void ContactRows::begin(std::size_t total) { lambda_.resize(total); }
+
+void ContactRows::write(int t, int runs, RowSink& sink) {
+  PairRows slots;
+  slots.lambda = lambda_.data();
+  const auto [first, last] = share_of(pairs_.size(), t, runs);
+  for (std::size_t p = first; p < last; ++p) {
+    slots.first = sink.next();
+    write_pair_rows(pairs_[p], bodies_, settings_, step_, slots);
+    // rows_of_pair counts what write_pair_rows writes
+    assert(slots.count == rows_of_pair(pairs_[p], settings_));
+    sink.put(slots.rows.data(), slots.count);
+  }
+}
+
+namespace {
+
+// Rows put into a vector sized for them, from `first` on.
+class RowVector final : public RowSink {
+ public:
+  RowVector(std::vector<ConstraintRow>& rows, int first) : RowSink(first), rows_(rows) {}
+  void put(const ConstraintRow* rows, int count) override {
+    std::copy(rows, rows + count, rows_.begin() + next_);
+    next_ += count;
+  }
+
+ private:
+  std::vector<ConstraintRow>& rows_;
+};
+
+}  // namespace
+
 void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
                       const ContactSettings& settings, const StepSettings& step,
                       std::vector<ConstraintRow>& rows, std::vector<double>& lambda,
                       Workers* workers) {
   // Each run of the workers writes a run of the pairs. Its rows' place is counted first, so
   // that the runs write side by side into rows sized for all of them at once.
+  ContactRows writer(pairs, bodies, settings, step, lambda);
   const int runs = runs_on(workers);
-  const RunStarts first_row = run_starts(workers, [&](int t) {
-    const auto [first, last] = share_of(pairs.size(), t, runs);
-    std::size_t count = 0;
-    for (std::size_t p = first; p < last; ++p) {
-      count += static_cast<std::size_t>(rows_of_pair(pairs[p], settings));
-    }
-    return count;
+  const RunStarts first_row = run_starts(workers, [&](int t) { return writer.count(t, runs); });
+  const std::size_t total = first_row[static_cast<std::size_t>(runs)];
+  writer.begin(total);
+  rows.resize(total);
+  run_on(workers, [&](int t) {
+    RowVector sink(rows, static_cast<int>(first_row[static_cast<std::size_t>(t)]));
+    writer.write(t, runs, sink);
   });
-  rows.resize(first_row[static_cast<std::size_t>(runs)]);
-  lambda.resize(first_row[static_cast<std::size_t>(runs)]);
-  const auto write_run = [&](int t) {
-    const std::size_t start = first_row[static_cast<std::size_t>(t)];
-    RowSlots slots{rows, lambda, static_cast<int>(start)};
-    const auto [first, last] = share_of(pairs.size(), t, runs);
-    for (std::size_t p = first; p < last; ++p) write_pair_rows(pairs[p], bodies, settings, step, slots);
-    // rows_of_pair counted what write_pair_rows wrote
-    assert(static_cast<std::size_t>(slots.next) == first_row[static_cast<std::size_t>(t) + 1]);
-  };
-  run_on(workers, write_run);
 }
 
 void store_contact_lambdas(std::vector<ContactPair>& pairs, const double* lambda,

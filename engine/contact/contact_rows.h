@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "constraints/constraint_row.h"
+#include "constraints/mlcp.h"
 #include "constraints/step_settings.h"
 #include "contact/contact.h"
 #include "motion/rigid_body.h"
@@ -59,13 +60,34 @@ struct ContactSettings {
 // Throws std::invalid_argument naming the first setting out of range.
 void validate(const ContactSettings& settings);
 
-// Makes `rows` the rows of every pair and `lambda` each row's warm-start λ (the cache's),
-// whatever they held before (their memory is reused): the pair's contact rows, then its friction
-// rows (below their contact rows, as the text orders them, so a friction bound reads the λc
-// updated in the same sweep). Records where they went: each pair's `rows`, each contact's `row`
-// and `friction_rows` (both contacts of a manifold name its one friction row). Uses β and Δt.
-// With `workers`, each of their threads writes the rows of a run of the pairs (each pair's rows
-// are its own), in the same places.
+// The rows of every pair, written into a RowSink in runs (a RowWriter: Mlcp::assemble packs
+// them as they come, and a step's contact rows are never stored as ConstraintRows), and each
+// row's warm-start λ (the cache's) into `lambda`, which begin() sizes for all the rows: each
+// pair's contact rows, then its friction rows (below their contact rows, as the text orders
+// them, so a friction bound reads the λc updated in the same sweep). Records where they went:
+// each pair's `rows`, each contact's `row` and `friction_rows` (both contacts of a manifold name
+// its one friction row). Uses β and Δt. Run t of `runs` writes the rows of a run of the pairs
+// (share_of: each pair's rows are its own).
+class ContactRows final : public RowWriter {
+ public:
+  ContactRows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
+              const ContactSettings& settings, const StepSettings& step,
+              std::vector<double>& lambda);
+  std::size_t count(int t, int runs) override;
+  void begin(std::size_t total) override;
+  void write(int t, int runs, RowSink& sink) override;
+
+ private:
+  std::vector<ContactPair>& pairs_;
+  const std::vector<RigidBody>& bodies_;
+  const ContactSettings& settings_;
+  const StepSettings& step_;
+  std::vector<double>& lambda_;
+};
+
+// The same rows as ConstraintRows: makes `rows` the rows of every pair and `lambda` their
+// warm-start λ, whatever they held before (their memory is reused). With `workers`, each of
+// their threads writes the rows of a run of the pairs, in the same places.
 void add_contact_rows(std::vector<ContactPair>& pairs, const std::vector<RigidBody>& bodies,
                       const ContactSettings& settings, const StepSettings& step,
                       std::vector<ConstraintRow>& rows, std::vector<double>& lambda,

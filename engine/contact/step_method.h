@@ -20,9 +20,8 @@ namespace lamina {
 // What steps 1–4 made, read-only.
 struct StepProblem {
   const WorldSettings& settings;
-  const std::vector<ConstraintRow>& rows;   // step 4's rows: each pair's contact and friction
-                                            // rows, then from first_joint_row the joints'
-  std::size_t first_joint_row;
+  std::size_t first_joint_row;              // step 4's rows (velocity's): each pair's contact
+                                            // and friction rows, then from here the joints'
   const std::vector<ContactPair>& pairs;    // the contacts, with their row map
   const std::vector<const Constraint*>& joints;  // the joints, in the order added
   const std::vector<RowRange>& joint_rows;  // and where each one's rows sit

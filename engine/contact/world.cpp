@@ -195,26 +195,28 @@ void World::update_cache() {
 }
 
 void World::build_rows() {
-  // the contacts' rows, λ_exp = the cached λ (zero with the cache off), in place of last step's
-  cache_.write_rows(bodies_, settings_.contact, settings_.step, rows_, lambda_, workers_.get());
-  first_joint_row_ = rows_.size();
+  // the joints' rows, numbered from 0 until they follow the contacts' in the MLCP
+  rows_.clear();
   for (Joint& joint : joints_) {
     joint.rows.first = static_cast<int>(rows_.size());
     joint.constraint->write_rows(bodies_, settings_.step.dt, settings_.step.beta, rows_);
     joint.rows.count = static_cast<int>(rows_.size()) - joint.rows.first;
   }
+  // eq. 3-16: J B λ = η with B = M⁻¹ Jᵀ, η = ζ/Δt − J (V/Δt + M⁻¹ F_ext), assembled as the
+  // contacts' rows are written (λ_exp = the cached λ, zero with the cache off), then the joints'
+  const double dt = settings_.step.dt;
+  unconstrained_velocities(bodies_, dt, unconstrained_, workers_.get());
+  ContactRows contact_rows = cache_.rows(bodies_, settings_.contact, settings_.step, lambda_);
+  velocity_.assemble(bodies_, contact_rows, rows_, unconstrained_, dt, workers_.get());
+  first_joint_row_ = static_cast<std::size_t>(velocity_.row_count()) - rows_.size();
+  for (Joint& joint : joints_) joint.rows.first += static_cast<int>(first_joint_row_);
   // the joints' rows, λ_exp = last step's λ
-  joint_warm_start_.append_guess(rows_.data() + first_joint_row_, rows_.data() + rows_.size(),
-                                 lambda_);
+  joint_warm_start_.append_guess(rows_.data(), rows_.data() + rows_.size(), lambda_);
   // the pitfall no-warm-start: every λ_exp = 0, the cache's points kept
   if (settings_.step.pitfalls.has(Pitfall::no_warm_start)) std::fill(lambda_.begin(), lambda_.end(), 0.0);
 }
 
 void World::solve(WorldReport* report) {
-  const double dt = settings_.step.dt;
-  // eq. 3-16: J B λ = η with B = M⁻¹ Jᵀ, η = ζ/Δt − J (V/Δt + M⁻¹ F_ext)
-  unconstrained_velocities(bodies_, dt, unconstrained_, workers_.get());
-  velocity_.assemble(bodies_, rows_, unconstrained_, dt, workers_.get());
   // eq. 3-24 by Projected Gauss-Seidel, friction bounds ±μ λc read as λc changes
   solve_recording(pgs_, velocity_, settings_.step.iterations, lambda_,
                   report != nullptr ? &report->velocity : nullptr, settings_.step.pitfalls);
@@ -225,9 +227,6 @@ void World::solve(WorldReport* report) {
 }
 
 void World::take_method_step(WorldReport* report) {
-  const double dt = settings_.step.dt;
-  unconstrained_velocities(bodies_, dt, unconstrained_, workers_.get());
-  velocity_.assemble(bodies_, rows_, unconstrained_, dt, workers_.get());
   joint_rows_.clear();
   for (const Joint& joint : joints_) joint_rows_.push_back(joint.rows);
   if (report != nullptr) {
@@ -235,8 +234,8 @@ void World::take_method_step(WorldReport* report) {
     report->velocity.lambda_exp = Eigen::Map<const Eigen::VectorXd>(
         lambda_.data(), static_cast<Eigen::Index>(lambda_.size()));
   }
-  const StepProblem problem{settings_,    rows_,       first_joint_row_, cache_.pairs(),
-                            joint_views_, joint_rows_, velocity_, workers_.get()};
+  const StepProblem problem{settings_,   first_joint_row_, cache_.pairs(), joint_views_,
+                            joint_rows_, velocity_,        workers_.get()};
   method_->take_step(problem, bodies_, lambda_, report);
   if (report != nullptr) {
     report->velocity.solution.lambda = Eigen::Map<const Eigen::VectorXd>(
@@ -251,7 +250,7 @@ void World::take_method_step(WorldReport* report) {
 
 void World::remember_lambdas(WorldReport* report) {
   cache_.store_lambdas(lambda_.data(), workers_.get());
-  joint_warm_start_.remember(rows_.data() + first_joint_row_, rows_.data() + rows_.size(),
+  joint_warm_start_.remember(rows_.data(), rows_.data() + rows_.size(),
                              lambda_.data() + first_joint_row_);
   if (report != nullptr) {
     report->pairs = cache_.pairs();

@@ -149,8 +149,9 @@ class World {
   std::vector<BodyPair> candidate_pairs_;    // the broad phase's pairs
   std::vector<FreshCollision> fresh_;        // the narrow phase's deepest points
   PerRun<std::vector<FreshCollision>> fresh_of_thread_;  // on threads: each run's
-  std::vector<ConstraintRow> rows_;          // the rows as written: contacts', then joints'
-  std::size_t first_joint_row_ = 0;          // where the joints' rows start in rows_
+  std::vector<ConstraintRow> rows_;          // the joints' rows as written (the contacts' are
+                                             // packed into velocity_ as they are written)
+  std::size_t first_joint_row_ = 0;          // where the joints' rows start in the MLCP
   std::vector<Vec6> unconstrained_;          // V/Δt + M⁻¹ F_ext per body (eq. 3-16), m/s², rad/s²
   Mlcp velocity_;                            // the velocity MLCP (eq. 3-16), assembled once
   std::vector<double> lambda_;               // its λ, in N: the warm start λ_exp, then solved

@@ -1,0 +1,177 @@
+// What is read from an assembled MLCP (mlcp.h)'s packed rows: the text's form of it (Jsp, Bsp,
+// Jmap, ζ, η, d, the bounds), W = J B λ − η and its residual, J_i X, and F_c = Jᵀ λ.
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "constraints/mlcp.h"
+
+namespace lamina {
+namespace {
+
+template <int N>
+const PackedRow<N>& row_at(const PackedRows<N>& rows, int i) {
+  assert(i >= 0 && i < static_cast<int>(rows.size()));
+  return rows[static_cast<std::size_t>(i)];
+}
+
+}  // namespace
+
+int Mlcp::row_count() const {
+  return visit([](const auto& rows) { return static_cast<int>(rows.size()); });
+}
+
+ConstraintRow Mlcp::row(int i) const {
+  return visit([&](const auto& rows) {
+    const auto& packed = row_at(rows, i);
+    ConstraintRow row;
+    row.Jmap = packed.map;
+    for (int k = 0; k < 2; ++k) row.Jsp[k] = widen(packed.J[k]);
+    copy_row_scalars(packed, row);
+    return row;
+  });
+}
+
+std::array<int, 2> Mlcp::bodies_of(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).map; });
+}
+
+Vec6 Mlcp::jacobian(int i, int k) const {
+  return visit([&](const auto& rows) { return widen(row_at(rows, i).J[k]); });
+}
+
+Vec6 Mlcp::b_block(int i, int k) const {
+  return visit([&](const auto& rows) { return widen(row_at(rows, i).B[k]); });
+}
+
+double Mlcp::zeta(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).zeta; });
+}
+
+double Mlcp::eta(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).eta; });
+}
+
+double Mlcp::d(int i) const {
+  // d_i = J_i · B_i, as assembled
+  return visit([&](const auto& rows) {
+    const auto& row = row_at(rows, i);
+    return row_dot(row.J, row.B[0], row.B[1], true);
+  });
+}
+
+int Mlcp::friction_of(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).friction_of; });
+}
+
+int Mlcp::friction_count(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).friction_count; });
+}
+
+double Mlcp::mu(int i) const {
+  return visit([&](const auto& rows) { return row_at(rows, i).mu; });
+}
+
+std::array<double, 2> Mlcp::bounds(int i, const double* lambda) const {
+  return visit([&](const auto& rows) { return bounds_of(row_at(rows, i), lambda); });
+}
+
+Eigen::VectorXd Mlcp::slack(const double* lambda) const {
+  return visit([&](const auto& rows) {
+    constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
+    std::vector<Block<N>> a;
+    transpose_multiply(rows, body_count_, lambda, a);
+    Eigen::VectorXd w(static_cast<Eigen::Index>(rows.size()));
+    // eq. 3-23: W = J B λ − η
+    for (size_t i = 0; i < rows.size(); ++i) w[static_cast<Eigen::Index>(i)] = row_dot(rows[i], a) - rows[i].eta;
+    return w;
+  });
+}
+
+double Mlcp::residual(const double* lambda) const {
+  const Eigen::VectorXd w = slack(lambda);
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < w.size(); ++i) {
+    const auto [lo, hi] = bounds(static_cast<int>(i), lambda);
+    // eq. 3-24: W = 0 inside the bounds, W ≥ 0 at λ⁻, W ≤ 0 at λ⁺
+    double violation = w[i];
+    if (lambda[i] <= lo) violation = std::min(w[i], 0.0);
+    if (lambda[i] >= hi) violation = std::max(w[i], 0.0);
+    if (lo == hi) violation = 0.0;
+    sum += violation * violation;
+  }
+  return std::sqrt(sum);
+}
+
+double Mlcp::row_times(int i, const std::vector<Vec6>& per_body) const {
+  return visit([&](const auto& rows) {
+    constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
+    const auto& row = row_at(rows, i);
+    const Block<N> x0 = cut<N>(per_body[row.map[0]]);
+    return row_dot<N>(row.J, x0, row.two_bodies() ? cut<N>(per_body[row.map[1]]) : x0,
+                      row.two_bodies());
+  });
+}
+namespace {
+
+// Adds λ J_b to body b's force and torque: all six components, or v_x, v_y, ω_z in the plane.
+void add_wrench(RigidBody& body, double lambda, const Block<6>& J) {
+  body.force += lambda * J.head<3>();
+  body.torque += lambda * J.tail<3>();
+}
+void add_wrench(RigidBody& body, double lambda, const Block<3>& J) {
+  body.force.x() += lambda * J[0];
+  body.force.y() += lambda * J[1];
+  body.torque.z() += lambda * J[2];
+}
+
+}  // namespace
+
+void Mlcp::add_constraint_forces(std::vector<RigidBody>& bodies, const double* lambda,
+                                 Workers* workers) const {
+  const int runs = runs_on(workers);
+  if (runs == 1) {
+    visit([&](const auto& rows) {
+      // eq. 3-11: F_c = Jᵀ λ
+      for_each_force(rows, lambda, [&](int body, double l, const auto& J) {
+        add_wrench(bodies[body], l, J);
+      });
+    });
+    return;
+  }
+  // Each run adds to its share of the bodies only (the share each run integrates), taking the
+  // groups that touch them in row order: every body's sum in the one-thread order.
+  run_on(workers, [&](int t) {
+    const std::pair<std::size_t, std::size_t> share = share_of(bodies.size(), t, runs);
+    const std::size_t first = share.first;  // named, not bound: a lambda may not capture a binding
+    const std::size_t last = share.second;
+    const auto own = [&](int body) {
+      return body >= 0 && static_cast<std::size_t>(body) >= first && static_cast<std::size_t>(body) < last;
+    };
+    visit([&](const auto& rows) {
+      for (std::size_t g = 0; g + 1 < groups_.size(); ++g) {
+        const std::array<int, 2> pair = groups_[g].bodies;
+        if (!own(pair[0]) && !own(pair[1])) continue;
+        // eq. 3-11: F_c = Jᵀ λ, this run's blocks of it
+        for_each_force(rows, lambda, groups_[g].first, groups_[g + 1].first,
+                       [&](int body, double l, const auto& J) {
+                         if (own(body)) add_wrench(bodies[body], l, J);
+                       });
+      }
+    });
+  });
+}
+
+
+Vec6 Mlcp::constraint_wrench(int body, const double* lambda) const {
+  Vec6 wrench = Vec6::Zero();
+  visit([&](const auto& rows) {
+    // eq. 3-11, 5-9: body b's block of F_c = Jᵀ λ
+    for_each_force(rows, lambda, [&](int b, double l, const auto& J) {
+      if (b == body) wrench += l * widen(J);
+    });
+  });
+  return wrench;
+}
+
+}  // namespace lamina
