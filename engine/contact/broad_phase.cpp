@@ -1,6 +1,7 @@
 #include "contact/broad_phase.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -101,27 +102,51 @@ void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
   } else {
     insertion_sort(order, before);
   }
-  // 2. the boxes band by band, each band's in x order, side by side for the sweep
+  // 2. the boxes band by band, each band's in x order, side by side for the sweep. Each run
+  // takes a run of the x order: it counts its boxes in each band, then lists them there after
+  // the runs before it, so that each band's boxes stay in x order.
   const Bands bands = choose_bands(boxes, memory.heights);
+  const int runs = runs_on(workers);
+  memory.band_fill_of_run.resize(runs);
+  memory.reach.resize(order.size());
+  run_on(workers, [&](int t) {
+    std::vector<int>& count = memory.band_fill_of_run[t];
+    count.assign(static_cast<std::size_t>(bands.count), 0);
+    const auto [first, last] = share_of(order.size(), t, runs);
+    for (std::size_t k = first; k < last; ++k) {
+      const Aabb& box = boxes[order[k]];
+      const std::array<int, 2> reach{bands.of(box.min.y()), bands.of(box.max.y())};
+      memory.reach[k] = reach;
+      for (int b = reach[0]; b <= reach[1]; ++b) ++count[b];
+    }
+  });
+  // where each band begins, and where in it each run's boxes begin (its fill)
   std::vector<int>& start = memory.band_start;
   start.assign(static_cast<std::size_t>(bands.count) + 1, 0);
-  for (const Aabb& box : boxes) {
-    for (int b = bands.of(box.min.y()); b <= bands.of(box.max.y()); ++b) ++start[b + 1];
+  for (int b = 0; b < bands.count; ++b) {
+    int at = start[b];
+    for (int t = 0; t < runs; ++t) {
+      const int count = memory.band_fill_of_run[t][b];
+      memory.band_fill_of_run[t][b] = at;
+      at += count;
+    }
+    start[b + 1] = at;
   }
-  for (int b = 0; b < bands.count; ++b) start[b + 1] += start[b];
   memory.banded.resize(static_cast<std::size_t>(start.back()));
   memory.banded_body.resize(memory.banded.size());
-  memory.band_fill.assign(start.begin(), start.end() - 1);
-  for (const int body : order) {
-    const Aabb& box = boxes[body];
-    for (int b = bands.of(box.min.y()); b <= bands.of(box.max.y()); ++b) {
-      const int at = memory.band_fill[b]++;
-      memory.banded[at] = box;
-      memory.banded_body[at] = body;
+  run_on(workers, [&](int t) {
+    std::vector<int>& fill = memory.band_fill_of_run[t];
+    const auto [first, last] = share_of(order.size(), t, runs);
+    for (std::size_t k = first; k < last; ++k) {
+      const int body = order[k];
+      for (int b = memory.reach[k][0]; b <= memory.reach[k][1]; ++b) {
+        const int at = fill[b]++;
+        memory.banded[at] = boxes[body];
+        memory.banded_body[at] = body;
+      }
     }
-  }
+  });
   // 3. sweep: each run takes the bands that start in its share of the listed boxes
-  const int runs = runs_on(workers);
   memory.found_of_run.resize(runs);
   const auto band_at = [&](std::size_t listed) {
     return static_cast<int>(std::lower_bound(start.begin(), start.end() - 1, listed) -

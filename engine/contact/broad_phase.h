@@ -14,6 +14,7 @@
 // ties.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "contact/shape.h"
@@ -38,7 +39,8 @@ struct SweepMemory {
   std::vector<int> order;                 // body indices sorted by min.x as of the last call
   std::vector<double> heights;            // the boxes' heights, for their median (the bands')
   std::vector<int> band_start;            // per band, where its boxes begin in `banded`
-  std::vector<int> band_fill;             // per band, where its next box goes while listing
+  std::vector<std::array<int, 2>> reach;  // per box in x order, its first and last band
+  PerRun<std::vector<int>> band_fill_of_run;  // per run, per band, where its next box goes
   std::vector<Aabb> banded;               // the boxes band after band, each band's in x order
   std::vector<int> banded_body;           // the body of each of them
   PerRun<std::vector<BodyPair>> found_of_run;  // per run of bands, the pairs it found
@@ -48,8 +50,9 @@ struct SweepMemory {
 // The pairs of overlapping (or touching) boxes, sorted. `memory.order` holds the body indices
 // sorted by min.x: empty (or of another size) on the first call, then last call's order for the
 // same bodies, which an insertion sort brings up to date in about one pass when bodies move a
-// little between steps (sort and sweep's frame coherence). With `workers`, the bands are swept
-// in one run of consecutive bands per thread (the same pairs).
+// little between steps (sort and sweep's frame coherence). With `workers`, each of their threads
+// lists the boxes of a run of the x order in their bands, and sweeps a run of consecutive bands
+// (the same pairs).
 void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
                     std::vector<BodyPair>& pairs, Workers* workers = nullptr);
 

@@ -46,11 +46,15 @@ void SplitImpulse::solve(const Mlcp& velocity, const std::vector<ContactPair>& p
   position_.assemble_rows_of(velocity, rows_, zeta_, dt, workers);
   lambda_.assign(rows_.size(), 0.0);
   solve_recording(pgs, position_, iterations, lambda_, report, step.pitfalls);
-  // The push-out velocity of each body: M⁻¹ Jᵀ λ Δt = B λ Δt
+  // The push-out velocity of each body: M⁻¹ Jᵀ λ Δt = B λ Δt (each run of the workers its share)
   push_out_.resize(static_cast<std::size_t>(velocity.body_count()));
-  for (std::size_t b = 0; b < push_out_.size(); ++b) {
-    push_out_[b] = pgs.velocity_change(static_cast<int>(b)) * dt;
-  }
+  const int runs = runs_on(workers);
+  run_on(workers, [&](int t) {
+    const auto [first, last] = share_of(push_out_.size(), t, runs);
+    for (std::size_t b = first; b < last; ++b) {
+      push_out_[b] = pgs.velocity_change(static_cast<int>(b)) * dt;
+    }
+  });
 }
 
 void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt, Pitfalls pitfalls) {
