@@ -7,9 +7,9 @@
 //     3. cache       cached points re-placed (eq. 5-12), fresh ones merged         (Fig 4-2..4-5)
 //     4. rows        contact rows (eq. 4-3, 5-8), each pair's followed by its friction
 //                    rows, then the joints' rows; each pair and joint records where its
-//                    rows went (the row map)                                       (eq. 5-11, 5-19)
-//     5. solve       the MLCP, assembled once: J B λ = η by PGS, warm started from the
-//                    cached λ                                                      (eq. 3-16, 5-21)
+//                    rows went (the row map); the MLCP assembled once, as they are
+//                    written                                                       (eq. 5-11, 5-19)
+//     5. solve       J B λ = η by PGS, warm started from the cached λ              (eq. 3-16, 5-21)
 //     6. forces Jᵀλ  F_c = Jᵀ λ added to each body                                (eq. 3-11, 5-9)
 //     7. integrate   chapter 2's step under F_ext + F_c                          (eq. 2-1..2-8)
 //   λ is a force; the impulse over the step is λ Δt. With split impulse (the default, beyond
