@@ -188,12 +188,13 @@ TEST_CASE("a written row out of the plane: the rows are packed again in the gene
     CAPTURE(threads);
     check_both_ways(piled, settings, threads);
   }
+  const StepSettings step;
   std::vector<Vec6> unconstrained;
-  unconstrained_velocities(piled.bodies, StepSettings{}.dt, unconstrained);
+  unconstrained_velocities(piled.bodies, step.dt, unconstrained);
   std::vector<ContactPair> pairs = piled.pairs;
   std::vector<double> lambda;
-  ContactRows writer(pairs, piled.bodies, settings, StepSettings{}, lambda);
+  ContactRows writer(pairs, piled.bodies, settings, step, lambda);
   Mlcp mlcp;
-  mlcp.assemble(piled.bodies, writer, {}, unconstrained, StepSettings{}.dt);
+  mlcp.assemble(piled.bodies, writer, {}, unconstrained, step.dt);
   CHECK(layout(mlcp) == 6);
 }

@@ -80,8 +80,8 @@ class ContactRows final : public RowWriter {
  private:
   std::vector<ContactPair>& pairs_;
   const std::vector<RigidBody>& bodies_;
-  const ContactSettings& settings_;
-  const StepSettings& step_;
+  ContactSettings settings_;  // copies: a writer made from temporaries keeps them
+  StepSettings step_;
   std::vector<double>& lambda_;
 };
 
