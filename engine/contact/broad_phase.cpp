@@ -159,26 +159,43 @@ void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
     const int end = t + 1 == runs ? bands.count : band_at(last);
     for (int band = band_at(first); band < end; ++band) sweep_band(memory, bands, band, found);
   });
-  // 4. sorted by (first, second): counted into place by first body, then each body's few pairs
-  // put in order by second
-  std::vector<int>& first_count = memory.first_count;
-  first_count.assign(boxes.size() + 1, 0);
-  std::size_t total = 0;
-  for (int t = 0; t < runs; ++t) {
-    for (const BodyPair& pair : memory.found_of_run[t]) ++first_count[pair.first + 1];
-    total += memory.found_of_run[t].size();
+  // 4. sorted by (first, second): each run counts its pairs by first body; the bodies' places
+  // follow one another, and within a body's the runs' in order; each run puts its pairs in
+  // place, then each body's few pairs of its share of the bodies in order by second
+  memory.first_next_of_run.resize(runs);
+  run_on(workers, [&](int t) {
+    std::vector<int>& count = memory.first_next_of_run[t];
+    count.assign(boxes.size(), 0);
+    for (const BodyPair& pair : memory.found_of_run[t]) ++count[pair.first];
+  });
+  std::vector<int>& first_start = memory.first_start;
+  first_start.resize(boxes.size() + 1);
+  int at = 0;
+  for (std::size_t b = 0; b < boxes.size(); ++b) {
+    first_start[b] = at;
+    for (int t = 0; t < runs; ++t) {
+      const int count = memory.first_next_of_run[t][b];
+      memory.first_next_of_run[t][b] = at;
+      at += count;
+    }
   }
-  for (std::size_t b = 0; b < boxes.size(); ++b) first_count[b + 1] += first_count[b];
-  pairs.resize(total);
-  for (int t = 0; t < runs; ++t) {
-    for (const BodyPair& pair : memory.found_of_run[t]) pairs[first_count[pair.first]++] = pair;
-  }
-  for (std::size_t k = 1; k < pairs.size(); ++k) {
-    const BodyPair pair = pairs[k];
-    std::size_t l = k;
-    for (; l > 0 && pair < pairs[l - 1]; --l) pairs[l] = pairs[l - 1];
-    pairs[l] = pair;
-  }
+  first_start[boxes.size()] = at;
+  pairs.resize(static_cast<std::size_t>(at));
+  run_on(workers, [&](int t) {
+    std::vector<int>& next = memory.first_next_of_run[t];
+    for (const BodyPair& pair : memory.found_of_run[t]) pairs[next[pair.first]++] = pair;
+  });
+  run_on(workers, [&](int t) {
+    const auto [first_body, last_body] = share_of(boxes.size(), t, runs);
+    for (std::size_t b = first_body; b < last_body; ++b) {
+      for (int k = first_start[b] + 1; k < first_start[b + 1]; ++k) {
+        const BodyPair pair = pairs[k];
+        int l = k;
+        for (; l > first_start[b] && pair.second < pairs[l - 1].second; --l) pairs[l] = pairs[l - 1];
+        pairs[l] = pair;
+      }
+    }
+  });
 }
 
 }  // namespace lamina

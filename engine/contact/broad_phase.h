@@ -44,15 +44,16 @@ struct SweepMemory {
   std::vector<Aabb> banded;               // the boxes band after band, each band's in x order
   std::vector<int> banded_body;           // the body of each of them
   PerRun<std::vector<BodyPair>> found_of_run;  // per run of bands, the pairs it found
-  std::vector<int> first_count;           // per body, how many pairs have it first (the sort)
+  PerRun<std::vector<int>> first_next_of_run;  // per run, per body, where its next pair goes
+  std::vector<int> first_start;           // per body, where its pairs (it first) begin
 };
 
 // The pairs of overlapping (or touching) boxes, sorted. `memory.order` holds the body indices
 // sorted by min.x: empty (or of another size) on the first call, then last call's order for the
 // same bodies, which an insertion sort brings up to date in about one pass when bodies move a
 // little between steps (sort and sweep's frame coherence). With `workers`, each of their threads
-// lists the boxes of a run of the x order in their bands, and sweeps a run of consecutive bands
-// (the same pairs).
+// lists the boxes of a run of the x order in their bands, sweeps a run of consecutive bands and
+// puts its pairs in order with the others' (the same pairs, in the same order).
 void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
                     std::vector<BodyPair>& pairs, Workers* workers = nullptr);
 
