@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 #include "contact/contact_rows.h"
@@ -19,10 +20,14 @@ namespace {
 
 // Equal bit for bit (a -0.0 and a 0.0 differ).
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool same_bits(const Vec6& a, const Vec6& b) { return std::memcmp(a.data(), b.data(), sizeof(double) * 6) == 0; }
+bool same_bits(const Vec6& a, const Vec6& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(double) * 6) == 0;
+}
 
+// The layout's components per block: 3 (planar) or 6.
 int layout(const Mlcp& mlcp) {
-  return mlcp.visit([](const auto& rows) { return std::decay_t<decltype(rows)>::value_type::size; });
+  return mlcp.visit(
+      [](const auto& rows) { return std::decay_t<decltype(rows)>::value_type::size; });
 }
 
 // Every number and group of `a` equals `b`'s.

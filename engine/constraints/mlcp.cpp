@@ -28,8 +28,10 @@ Block<3> convert<3>(const RigidBody& body, const Block<3>& block) {
 // plane (J's and B's v_z, ω_x, ω_y zero); its numbers are then those of N = 6, cut. Always
 // inlined into its two callers (called, 0.5 M more instructions a step of pyramid:20).
 template <int N>
-[[gnu::always_inline]] inline void pack_row(const std::vector<RigidBody>& bodies, const ConstraintRow& row,
-              const std::vector<Vec6>& unconstrained, double dt, PackedRow<N>& packed) {
+[[gnu::always_inline]] inline void pack_row(const std::vector<RigidBody>& bodies,
+                                            const ConstraintRow& row,
+                                            const std::vector<Vec6>& unconstrained, double dt,
+                                            PackedRow<N>& packed) {
   assert(row.Jmap[0] >= 0 && row.Jmap[0] != row.Jmap[1]);  // one or two bodies, never the same
   packed.map = row.Jmap;
   for (int k = 0; k < 2; ++k) {
@@ -143,9 +145,9 @@ void Mlcp::pack_in_runs(std::size_t first, std::size_t count, Workers* workers, 
 
 void Mlcp::add_groups(const std::vector<RowGroup>& groups) {
   auto from = groups.begin();
-  if (from != groups.end() && !groups_.empty() && same_bodies(groups_.back().bodies, from->bodies)) {
-    ++from;
-  }
+  const bool joins = from != groups.end() && !groups_.empty() &&
+                     same_bodies(groups_.back().bodies, from->bodies);
+  if (joins) ++from;
   groups_.insert(groups_.end(), from, groups.end());
 }
 
@@ -153,7 +155,8 @@ namespace {
 
 // Whether a row and its bodies' I⁻¹ keep to the plane, so that it can be packed in the planar
 // layout. Inlined: looked at for every row a step writes.
-[[gnu::always_inline]] inline bool row_in_plane(const ConstraintRow& row, const std::vector<unsigned char>& inertia_in_plane) {
+[[gnu::always_inline]] inline bool row_in_plane(
+    const ConstraintRow& row, const std::vector<unsigned char>& inertia_in_plane) {
   return in_plane(row.Jsp[0]) && in_plane(row.Jsp[1]) && inertia_in_plane[row.Jmap[0]] &&
          (row.is_one_body() || inertia_in_plane[row.Jmap[1]]);
 }
@@ -266,8 +269,9 @@ void Mlcp::assemble(const std::vector<RigidBody>& bodies, RowWriter& written,
   };
   const auto check_rows = [&](int t) {
     const auto [begin, end] = share_of(rows.size(), t, runs);
-    planar_in_run_[t] = std::all_of(rows.begin() + begin, rows.begin() + end,
-                                    [&](const ConstraintRow& row) { return row_in_plane(row, inertia_in_plane_); });
+    planar_in_run_[t] = std::all_of(
+        rows.begin() + begin, rows.begin() + end,
+        [&](const ConstraintRow& row) { return row_in_plane(row, inertia_in_plane_); });
   };
   run_on(workers, check_bodies);
   run_on(workers, check_rows);

@@ -83,7 +83,9 @@ Eigen::VectorXd Mlcp::slack(const double* lambda) const {
     transpose_multiply(rows, body_count_, lambda, a);
     Eigen::VectorXd w(static_cast<Eigen::Index>(rows.size()));
     // eq. 3-23: W = J B λ − η
-    for (size_t i = 0; i < rows.size(); ++i) w[static_cast<Eigen::Index>(i)] = row_dot(rows[i], a) - rows[i].eta;
+    for (size_t i = 0; i < rows.size(); ++i) {
+      w[static_cast<Eigen::Index>(i)] = row_dot(rows[i], a) - rows[i].eta;
+    }
     return w;
   });
 }
@@ -146,7 +148,8 @@ void Mlcp::add_constraint_forces(std::vector<RigidBody>& bodies, const double* l
     const std::size_t first = share.first;  // named, not bound: a lambda may not capture a binding
     const std::size_t last = share.second;
     const auto own = [&](int body) {
-      return body >= 0 && static_cast<std::size_t>(body) >= first && static_cast<std::size_t>(body) < last;
+      const auto at = static_cast<std::size_t>(body);
+      return body >= 0 && at >= first && at < last;
     };
     visit([&](const auto& rows) {
       for (std::size_t g = 0; g + 1 < groups_.size(); ++g) {

@@ -191,7 +191,9 @@ void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
       for (int k = first_start[b] + 1; k < first_start[b + 1]; ++k) {
         const BodyPair pair = pairs[k];
         int l = k;
-        for (; l > first_start[b] && pair.second < pairs[l - 1].second; --l) pairs[l] = pairs[l - 1];
+        for (; l > first_start[b] && pair.second < pairs[l - 1].second; --l) {
+          pairs[l] = pairs[l - 1];
+        }
         pairs[l] = pair;
       }
     }

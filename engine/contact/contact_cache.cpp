@@ -158,8 +158,9 @@ void ContactCache::merge_run(std::vector<ContactPair>::const_iterator cached,
   }
 }
 
-ContactRows ContactCache::rows(const std::vector<RigidBody>& bodies, const ContactSettings& settings,
-                               const StepSettings& step, std::vector<double>& lambda) {
+ContactRows ContactCache::rows(const std::vector<RigidBody>& bodies,
+                               const ContactSettings& settings, const StepSettings& step,
+                               std::vector<double>& lambda) {
   return ContactRows(pairs_, bodies, settings, step, lambda);
 }
 
