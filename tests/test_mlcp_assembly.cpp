@@ -7,12 +7,15 @@
 #include <doctest/doctest.h>
 
 #include <cstring>
+#include <string>
 #include <type_traits>
 #include <vector>
 
 #include "contact/contact_rows.h"
 #include "contact/world.h"
 #include "parallel/workers.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_world.h"
 
 using namespace lamina;
 
@@ -85,18 +88,12 @@ Contacts bridge(const ContactSettings& contact) {
   return contacts_after(world, 3);
 }
 
-// A pyramid of boxes `base` wide on the ground.
+// The built-in pyramid of boxes `base` wide, with these contact settings.
 Contacts pyramid(int base, const ContactSettings& contact) {
-  WorldSettings settings;
+  const Scene scene = builtin_scene("pyramid:" + std::to_string(base));
+  WorldSettings settings = world_settings(scene);
   settings.contact = contact;
-  World world(settings);
-  world.add_static_box(40.0, 0.5, Vec3(0.0, -0.5, 0.0));
-  for (int row = 0; row < base; ++row) {
-    for (int k = 0; k < base - row; ++k) {
-      const double x = (k - 0.5 * (base - row - 1)) * 1.05;
-      world.add_box(1.0, 0.5, 0.5, Vec3(x, 0.5 + row * 1.0, 0.0));
-    }
-  }
+  World world = build_world(scene, settings);
   return contacts_after(world, 20);
 }
 

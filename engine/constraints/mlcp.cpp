@@ -125,6 +125,7 @@ double row_velocity(const ConstraintRow& row, const std::vector<RigidBody>& bodi
 
 template <class Pack>
 void Mlcp::pack_in_runs(std::size_t first, std::size_t count, Workers* workers, Pack&& pack) {
+  if (count == 0) return;  // no groups: nothing to hand the threads (a World without joints)
   const int runs = runs_on(workers);
   groups_of_run_.resize(runs);
   friction_own_in_run_.assign(static_cast<std::size_t>(runs), 1);
@@ -274,7 +275,7 @@ void Mlcp::assemble(const std::vector<RigidBody>& bodies, RowWriter& written,
         [&](const ConstraintRow& row) { return row_in_plane(row, inertia_in_plane_); });
   };
   run_on(workers, check_bodies);
-  run_on(workers, check_rows);
+  if (!rows.empty()) run_on(workers, check_rows);
   planar_ = std::all_of(planar_in_run_.begin(), planar_in_run_.end(), [](unsigned char p) { return p != 0; });
   body_count_ = static_cast<int>(bodies.size());
   groups_.clear();
