@@ -150,6 +150,38 @@ void check_both_ways(const Contacts& contacts, const ContactSettings& settings, 
   }
 }
 
+// A writer that passes another's rows on, counting how many it was given to write: a sink of
+// its own puts them into the sink it was handed and says what that one says.
+class Counting final : public RowWriter {
+ public:
+  explicit Counting(RowWriter& inner) : inner_(inner) {}
+  std::size_t count(int t, int runs) override { return inner_.count(t, runs); }
+  void begin(std::size_t total) override { inner_.begin(total); }
+  void write(int t, int runs, RowSink& sink) override {
+    Passing passing(sink, written_);
+    inner_.write(t, runs, passing);
+  }
+  std::size_t written() const { return written_; }
+
+ private:
+  class Passing final : public RowSink {
+   public:
+    Passing(RowSink& to, std::size_t& written) : RowSink(to.next()), to_(to), written_(written) {}
+    bool put(const ConstraintRow* rows, int count) override {
+      written_ += static_cast<std::size_t>(count);
+      const bool more = to_.put(rows, count);
+      next_ = to_.next();
+      return more;
+    }
+
+   private:
+    RowSink& to_;
+    std::size_t& written_;
+  };
+  RowWriter& inner_;
+  std::size_t written_ = 0;
+};
+
 }  // namespace
 
 TEST_CASE("contact rows packed as written: the MLCP of the same rows assembled from a vector") {
@@ -196,7 +228,13 @@ TEST_CASE("a written row out of the plane: the rows are packed again in the gene
   std::vector<ContactPair> pairs = piled.pairs;
   std::vector<double> lambda;
   ContactRows writer(pairs, piled.bodies, settings, step, lambda);
+  Counting counting(writer);
   Mlcp mlcp;
-  mlcp.assemble(piled.bodies, writer, {}, unconstrained, step.dt);
+  mlcp.assemble(piled.bodies, counting, {}, unconstrained, step.dt);
   CHECK(layout(mlcp) == 6);
+  // the planar packing stops the writing at the first pair (each pair has a u2 = z row): its
+  // rows, then every row once in the general layout — not every row twice
+  const std::size_t rows = static_cast<std::size_t>(mlcp.row_count());
+  REQUIRE(pairs.size() > 2);
+  CHECK(counting.written() == static_cast<std::size_t>(pairs.front().rows.count) + rows);
 }

@@ -37,7 +37,8 @@ template <int N>
   for (int k = 0; k < 2; ++k) {
     packed.J[k] = cut<N>(row.Jsp[k]);
     // the text's Convert: Bᵀ_i = J_i M⁻¹, block by block
-    packed.B[k] = row.Jmap[k] < 0 ? Block<N>::Zero().eval() : convert<N>(bodies[row.Jmap[k]], packed.J[k]);
+    packed.B[k] = row.Jmap[k] < 0 ? Block<N>::Zero().eval()
+                                  : convert<N>(bodies[row.Jmap[k]], packed.J[k]);
   }
   const bool two = row.Jmap[1] >= 0;
   // d_i = J_i · B_i
@@ -165,7 +166,8 @@ namespace {
 // A run of the rows a RowWriter writes, packed as they come into packed rows from `first` on:
 // the groups that start in the run, and whether each friction row has its contact rows before
 // it on its own bodies in the run (a contact's always do). For N = 3, a row out of the plane
-// stops the packing (in_plane() false: the rows are then packed again in the general layout).
+// stops the packing and the writing (in_plane() false: the rows are then written again and
+// packed in the general layout).
 template <int N>
 class PackingSink final : public RowSink {
  public:
@@ -176,11 +178,16 @@ class PackingSink final : public RowSink {
         inertia_in_plane_(inertia_in_plane), unconstrained_(unconstrained), dt_(dt),
         groups_(groups) {}
 
-  void put(const ConstraintRow* rows, int count) override {
+  bool put(const ConstraintRow* rows, int count) override {
+    if (!in_plane_) return false;  // it takes no more
     for (int k = 0; k < count; ++k, ++next_) {
       const ConstraintRow& row = rows[k];
-      if constexpr (N == 3) in_plane_ = in_plane_ && row_in_plane(row, inertia_in_plane_);
-      if (!in_plane_) continue;
+      if constexpr (N == 3) {
+        if (!row_in_plane(row, inertia_in_plane_)) {
+          in_plane_ = false;
+          return false;
+        }
+      }
       pack_row<N>(bodies_, row, unconstrained_, dt_, packed_[static_cast<std::size_t>(next_)]);
       if (groups_.empty() || !same_bodies(row.Jmap, groups_.back().bodies)) {
         groups_.push_back({next_, row.Jmap});
@@ -192,6 +199,7 @@ class PackingSink final : public RowSink {
                                                         : std::array<int, 2>{-2, -2};
                                    });
     }
+    return true;
   }
   bool in_plane() const { return in_plane_; }
   bool friction_on_own_bodies() const { return own_; }
@@ -232,8 +240,9 @@ bool Mlcp::pack_written(PackedRows<N>& packed, const std::vector<RigidBody>& bod
     PackingSink<N> sink(static_cast<int>(starts[static_cast<std::size_t>(t)]), packed, bodies,
                         inertia_in_plane_, unconstrained, dt, groups);
     written.write(t, runs, sink);
-    // the writer wrote what it counted
-    assert(static_cast<std::size_t>(sink.next()) == starts[static_cast<std::size_t>(t) + 1]);
+    // the writer wrote what it counted, unless the sink stopped it
+    assert(!sink.in_plane() ||
+           static_cast<std::size_t>(sink.next()) == starts[static_cast<std::size_t>(t) + 1]);
     planar_in_run_[static_cast<std::size_t>(t)] = sink.in_plane();
     friction_own_in_run_[static_cast<std::size_t>(t)] = sink.friction_on_own_bodies();
   });
@@ -266,7 +275,9 @@ void Mlcp::assemble(const std::vector<RigidBody>& bodies, RowWriter& written,
   planar_in_run_.assign(static_cast<std::size_t>(runs), 1);
   const auto check_bodies = [&](int t) {
     const auto [first_body, last_body] = share_of(bodies.size(), t, runs);
-    for (size_t b = first_body; b < last_body; ++b) inertia_in_plane_[b] = inertia_in_plane(bodies[b]);
+    for (size_t b = first_body; b < last_body; ++b) {
+      inertia_in_plane_[b] = inertia_in_plane(bodies[b]);
+    }
   };
   const auto check_rows = [&](int t) {
     const auto [begin, end] = share_of(rows.size(), t, runs);
@@ -276,7 +287,8 @@ void Mlcp::assemble(const std::vector<RigidBody>& bodies, RowWriter& written,
   };
   run_on(workers, check_bodies);
   if (!rows.empty()) run_on(workers, check_rows);
-  planar_ = std::all_of(planar_in_run_.begin(), planar_in_run_.end(), [](unsigned char p) { return p != 0; });
+  planar_ = std::all_of(planar_in_run_.begin(), planar_in_run_.end(),
+                        [](unsigned char p) { return p != 0; });
   body_count_ = static_cast<int>(bodies.size());
   groups_.clear();
   friction_on_own_bodies_ = true;

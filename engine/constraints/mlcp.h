@@ -53,8 +53,10 @@ struct RowGroup {
 class RowSink {
  public:
   virtual ~RowSink() = default;
-  // Takes `count` rows, in order: they become rows next() … next() + count − 1.
-  virtual void put(const ConstraintRow* rows, int count) = 0;
+  // Takes `count` rows, in order: they become rows next() … next() + count − 1. False: the sink
+  // takes no more rows (an MLCP packing in the planar layout was put a row out of the plane),
+  // and the writer stops writing this run.
+  virtual bool put(const ConstraintRow* rows, int count) = 0;
   int next() const { return next_; }  // the index the next row put gets
 
  protected:
@@ -65,8 +67,9 @@ class RowSink {
 // Rows written in runs, straight into a sink: run t of `runs` writes its rows after those of
 // the runs before it. count(t, runs) and then write(t, runs, sink) are called on run t's thread
 // (a team's, or the calling thread for one run), begin(total) once between, on the calling
-// thread. write may be called again for all the runs (an MLCP that finds a row out of the plane
-// packs the rows again in the general layout): it writes the same rows again.
+// thread. write stops a run where its sink's put returns false, and may be called again for all
+// the runs (an MLCP that finds a row out of the plane stops the writing and has the rows written
+// again, to pack them in the general layout): it writes the same rows again.
 class RowWriter {
  public:
   virtual ~RowWriter() = default;
@@ -118,7 +121,8 @@ class Mlcp {
   double zeta(int i) const;                   // ζ_i, in m/s or rad/s (eq. 3-15)
   double eta(int i) const;                    // η_i, in m/s² or rad/s² (eq. 3-16)
   double d(int i) const;                      // d_i = J_i · B_i, the diagonal of J B
-  int friction_of(int i) const;               // the (first) contact row bounding a friction row, or −1
+  // the (first) contact row bounding a friction row, or −1
+  int friction_of(int i) const;
   int friction_count(int i) const;            // how many contact rows from friction_of bound it
   double mu(int i) const;                     // μ of a friction row (its bounds: ±μ Σ λc)
   // λ⁻_i and λ⁺_i for the current λ: fixed, or ±μ λc for a friction row (eq. 3-26).

@@ -104,7 +104,8 @@ int append_friction_row(PairRows& slots, const ContactPair& pair, const RowEnds&
 void crude_friction_bounds(PairRows& slots, int first, int last, const ContactPair& pair,
                            const std::vector<RigidBody>& bodies, const StepSettings& step) {
   const RigidBody& second = bodies[static_cast<std::size_t>(pair.bodies.second)];
-  const RigidBody& held = second.is_static() ? bodies[static_cast<std::size_t>(pair.bodies.first)] : second;
+  const RigidBody& held =
+      second.is_static() ? bodies[static_cast<std::size_t>(pair.bodies.first)] : second;
   const double per_point = pair.friction * held.mass * step.gravity.norm();
   for (int i = first; i < last; ++i) {
     ConstraintRow& row = slots.at(i);
@@ -117,7 +118,9 @@ void crude_friction_bounds(PairRows& slots, int first, int last, const ContactPa
 }
 
 // The direction of friction row t: u1 = z × n in the plane, u2 = z.
-Vec3 tangent(int t, const Vec2& normal) { return t == 0 ? lift(tangent_of(normal)) : Vec3::UnitZ(); }
+Vec3 tangent(int t, const Vec2& normal) {
+  return t == 0 ? lift(tangent_of(normal)) : Vec3::UnitZ();
+}
 
 }  // namespace
 
@@ -225,7 +228,7 @@ void ContactRows::write(int t, int runs, RowSink& sink) {
     write_pair_rows(pairs_[p], bodies_, settings_, step_, slots);
     // rows_of_pair counts what write_pair_rows writes
     assert(slots.count == rows_of_pair(pairs_[p], settings_));
-    sink.put(slots.rows.data(), slots.count);
+    if (!sink.put(slots.rows.data(), slots.count)) return;
   }
 }
 
@@ -235,9 +238,10 @@ namespace {
 class RowVector final : public RowSink {
  public:
   RowVector(std::vector<ConstraintRow>& rows, int first) : RowSink(first), rows_(rows) {}
-  void put(const ConstraintRow* rows, int count) override {
+  bool put(const ConstraintRow* rows, int count) override {
     std::copy(rows, rows + count, rows_.begin() + next_);
     next_ += count;
+    return true;
   }
 
  private:
