@@ -30,6 +30,7 @@ class PartPlan {
 
   // False when the parts would wait on each other too often (then one part is faster).
   bool usable() const { return usable_; }
+  int parts() const { return parts_; }  // how many parts it cuts the groups into
   // Part t takes the groups [first_group(t), first_group(t + 1)).
   int first_group(int part) const { return part_first_[static_cast<std::size_t>(part)]; }
   const GroupWait* waits() const { return group_waits_.data(); }  // per group

@@ -125,14 +125,15 @@ template <int N, bool ClampIncrement>
   }
 }
 
-// Passes `first_pass` to `sweeps` over the groups of parts 2t and 2t + 1, taken as two lanes
-// (pass 0 is a = B λ, passes 1, 2, … the sweeps). Each lane goes as far as its waits allow: on
+// Passes `first_pass` to `sweeps` over the groups of parts t and P − 1 − t of the plan's P parts
+// (from both ends of the wavefront: pgs_solver.h), taken as two lanes (pass 0 is a = B λ,
+// passes 1, 2, … the sweeps). Each lane goes as far as its waits allow: on
 // the other lane, through the lanes' own counts of groups passed; on another thread's part,
 // through that part's Progress. A lane's wait is looked at only where a run of its groups starts
 // (PartPlan::run_end: a group that waits starts a run, and a run ends after a group that
 // another part waits for); the groups after the first of a run wait on no other part. Each step
 // takes the next run of each lane that may go, both side by side as far as the shorter goes
-// where both can (pass_two_groups). Lane 2t + 1 starts once the groups its first groups share
+// where both can (pass_two_groups). Each lane starts once the groups its first groups share
 // bodies with have been passed (about a pass of the part before it), then the two go side by
 // side. Some lane can always go, or will once another thread has got further: the first of all
 // the parts' next groups in the one-thread order has every group before it on its bodies behind
@@ -147,7 +148,7 @@ template <int N, bool ClampIncrement>
   const long group_count = static_cast<long>(groups.size()) - 1;
   // each lane's part, its next pass k and group g, and its count k·G + g + 1 of the last group
   // passed (when the first pass is a sweep, pass 0 was done before); an empty lane is done
-  const std::array<int, 2> part{2 * t, 2 * t + 1};
+  const std::array<int, 2> part{t, plan_->parts() - 1 - t};
   std::array<long, 2> pass{first_pass, first_pass};
   std::array<int, 2> next{};
   std::array<long, 2> passed{};
@@ -165,8 +166,8 @@ template <int N, bool ClampIncrement>
       const int v = wait.part[e];
       if (v < 0) continue;
       const long needed = pass[u] * group_count + wait.after[e];
-      if (v / 2 == t) {
-        if (passed[v % 2] < needed) return v + 1;
+      if (v == part[0] || v == part[1]) {  // this thread's other lane
+        if (passed[v == part[0] ? 0 : 1] < needed) return v + 1;
       } else if (seen[v] < needed) {
         seen[v] = progress_[v].value();
         if (seen[v] < needed) return v + 1;
@@ -227,7 +228,9 @@ template <int N, bool ClampIncrement>
       // both wait, one at least on another thread's part (else the plan is wrong): look at
       // both again after a moment. Not waiting on that part alone: it may be waiting, in turn,
       // on this thread's other lane, which is free to go once its own wait is over.
-      const auto other_thread = [t](int wait) { return wait > 0 && (wait - 1) / 2 != t; };
+      const auto other_thread = [&](int wait) {
+        return wait > 0 && wait - 1 != part[0] && wait - 1 != part[1];
+      };
       const bool on_other_thread = other_thread(wait0) || other_thread(wait1);
       if (!on_other_thread || progress_ == nullptr) {
         throw std::logic_error("PGS's two lanes both wait on each other: their plan is wrong");
@@ -240,10 +243,10 @@ template <int N, bool ClampIncrement>
 }
 
 // On the workers' threads: a = B λ (pass 0), then `sweeps` sweeps (passes 1, 2, …), thread t
-// taking parts 2t and 2t + 1 as two lanes (sweep_in_lanes), pass after pass, and waiting where
-// plan_parts found a group of another thread's part before one of its own. Thread t starts
-// pass k once the part before its first has passed the rows its first rows share bodies with:
-// a wavefront, each part at most a pass behind the one before it.
+// taking parts t and 2T − 1 − t as two lanes (sweep_in_lanes), pass after pass, and waiting where
+// plan_parts found a group of another thread's part before one of its own. Each part starts
+// pass k once the part before it has passed the rows its first rows share bodies with: a
+// wavefront, each part at most a pass behind the one before it.
 template <int N, bool ClampIncrement>
 void PgsSolver::solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
                                  std::vector<Block<N>>& a_of_body, double* lambda, int sweeps) {
