@@ -89,6 +89,13 @@ void validate(const CacheSettings& s) {
   require_margin(s.ties.tolerance, "ties.tolerance");
 }
 
+size_t ContactCache::cursor_at(const BodyPair& bodies) const {
+  return static_cast<size_t>(
+      std::lower_bound(pairs_.begin(), pairs_.end(), bodies,
+                       [](const ContactPair& pair, const BodyPair& b) { return pair.bodies < b; }) -
+      pairs_.begin());
+}
+
 CachedPoints ContactCache::cached_points(const BodyPair& bodies, const std::vector<Pose2>& poses,
                                          size_t& cursor) const {
   CachedPoints cached;

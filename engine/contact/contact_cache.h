@@ -49,9 +49,14 @@ class ContactCache {
   const std::vector<ContactPair>& pairs() const { return pairs_; }
 
   // The cached points of a pair re-placed at the current poses, for the narrow phase's ties.
-  // Pairs are asked for in sorted order: `cursor` (0 before the first) walks the cache once.
+  // Pairs are asked for in sorted order: `cursor` walks the cache once, from 0 or from
+  // cursor_at(the first pair asked for).
   CachedPoints cached_points(const BodyPair& bodies, const std::vector<Pose2>& poses,
                              size_t& cursor) const;
+  // Where a cursor asking first for `bodies` may start: the first kept pair not before it
+  // (a run of the narrow phase that starts mid-way skips the pairs before it without reading
+  // them one by one).
+  size_t cursor_at(const BodyPair& bodies) const;
 
   // Steps 1 and 2 above. `fresh` must be sorted by pair; materials give a new pair's μ and e.
   // With `workers`, each of their threads updates a run of the pairs (each pair's update is its

@@ -175,7 +175,10 @@ void World::detect_collisions() {
 void World::find_collisions(std::size_t first, std::size_t last,
                             std::vector<FreshCollision>& found) const {
   found.clear();
-  size_t cursor = 0;  // the cache's pairs, walked along with the sorted candidates
+  // the cache's pairs, walked along with the sorted candidates from this run's first (a run
+  // that starts mid-way once walked every pair before it: on two threads, the second thread
+  // read half the cache's pairs, one cache line each, before its first candidate)
+  size_t cursor = first < last ? cache_.cursor_at(candidate_pairs_[first]) : 0;
   for (std::size_t i = first; i < last; ++i) {
     const BodyPair& pair = candidate_pairs_[i];
     if (bodies_[pair.first].is_static() && bodies_[pair.second].is_static()) continue;
