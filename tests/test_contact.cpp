@@ -371,35 +371,6 @@ TEST_SUITE("World") {
     }
   }
 
-  TEST_CASE("a run of the narrow phase that starts mid-way finds its pairs' cached points") {
-    // Three kept pairs, (0, 1), (0, 2), (1, 2): a cursor for a pair starts at the first kept
-    // pair not before it (exact indices: the pairs are sorted by (body 1, body 2)), and the
-    // cached points found from there are the pair's own.
-    const std::vector<Shape> shapes{Shape::box(5.0, 0.5), Shape::box(0.5, 0.5),
-                                    Shape::box(0.5, 0.5)};
-    const std::vector<Material> materials(3);
-    const std::vector<Pose2> poses{Pose2{Vec2(0.0, -0.5)}, Pose2{Vec2(-1.0, 0.5)},
-                                   Pose2{Vec2(1.0, 0.5)}};
-    Collision touch;
-    touch.point = Vec2(0.0, 0.0);
-    ContactCache cache;
-    cache.update({FreshCollision{BodyPair{0, 1}, touch}, FreshCollision{BodyPair{0, 2}, touch},
-                  FreshCollision{BodyPair{1, 2}, touch}},
-                 poses, shapes, materials, CacheSettings{});
-    REQUIRE(cache.pairs().size() == 3);
-    CHECK(cache.cursor_at(BodyPair{0, 1}) == 0);
-    CHECK(cache.cursor_at(BodyPair{0, 2}) == 1);
-    CHECK(cache.cursor_at(BodyPair{0, 3}) == 2);
-    CHECK(cache.cursor_at(BodyPair{1, 2}) == 2);
-    CHECK(cache.cursor_at(BodyPair{2, 3}) == 3);
-    for (const BodyPair& pair : {BodyPair{0, 2}, BodyPair{1, 2}}) {
-      size_t cursor = cache.cursor_at(pair);
-      CHECK(cache.cached_points(pair, poses, cursor).count == 1);
-    }
-    size_t past = cache.cursor_at(BodyPair{0, 3});
-    CHECK(cache.cached_points(BodyPair{0, 3}, poses, past).count == 0);  // not kept
-  }
-
   TEST_CASE("bad settings and bodies out of the plane are refused with a message") {
     WorldSettings bad;
     bad.step.dt = 0.0;

@@ -123,7 +123,8 @@ TEST_SUITE("Determinism") {
 
   TEST_CASE("on 2 and 3 threads each scene keeps its golden hash") {
     // WorldSettings::threads changes how fast a step is taken, never a bit of it
-    // (parallel/workers.h; tests/test_threads.cpp sweeps a pyramid big enough for PGS's threads).
+    // (parallel/workers.h; tests/test_pgs_threads.cpp sweeps a pyramid big enough for PGS's
+    // threads).
     for (const Golden& expected : golden) {
       for (const int threads : {2, 3}) {
         const std::string scene = expected.scene, solver = expected.solver;

@@ -1,5 +1,5 @@
 // Threads (issue 19): the worker team and its shares, and a step taken on 2 and 3 threads giving
-// the one-thread numbers bit for bit — λ of PGS's sweeps, and every body's state.
+// the one-thread numbers bit for bit: every body's state (PGS's λ alone: test_pgs_threads.cpp).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -7,13 +7,11 @@
 #include <atomic>
 #include <cstring>
 #include <optional>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include "constraints/pgs_solver.h"
 #include "parallel/workers.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
@@ -22,13 +20,7 @@ using namespace lamina;
 
 namespace {
 
-// The bytes of a vector of doubles: equal bytes, equal bits (−0 and +0, and NaNs, told apart).
-std::vector<unsigned char> bytes_of(const double* values, std::size_t count) {
-  std::vector<unsigned char> bytes(count * sizeof(double));
-  if (count > 0) std::memcpy(bytes.data(), values, bytes.size());
-  return bytes;
-}
-
+// Every body's x, q, v and ω as bytes: equal bytes, equal bits (−0 and +0, and NaNs, told apart).
 std::vector<unsigned char> state_bytes(const World& world) {
   std::vector<double> values;
   for (const RigidBody& b : world.bodies()) {
@@ -37,7 +29,9 @@ std::vector<unsigned char> state_bytes(const World& world) {
     values.insert(values.end(), b.v.data(), b.v.data() + 3);
     values.insert(values.end(), b.angular_velocity.data(), b.angular_velocity.data() + 3);
   }
-  return bytes_of(values.data(), values.size());
+  std::vector<unsigned char> bytes(values.size() * sizeof(double));
+  if (!values.empty()) std::memcpy(bytes.data(), values.data(), bytes.size());
+  return bytes;
 }
 
 World world_of(const std::string& scene_name, const std::string& solver, int threads) {
@@ -46,41 +40,6 @@ World world_of(const std::string& scene_name, const std::string& solver, int thr
   WorldSettings settings = world_settings(scene);
   settings.threads = threads;
   return build_world(scene, settings);
-}
-
-// The velocity MLCP of pyramid:20 after `steps` steps and its warm start: 1700-odd rows.
-StepReport pyramid_mlcp(int steps, Scene scene = builtin_scene("pyramid:20")) {
-  scene.solver = "pgs";
-  World world = build_world(scene, world_settings(scene));
-  for (int k = 0; k < steps; ++k) world.step();
-  WorldReport report;
-  world.step(report);
-  return report.velocity;
-}
-
-// λ after `sweeps` sweeps from the report's warm start, by `solver`.
-std::vector<unsigned char> solved(PgsSolver& solver, const StepReport& step, int sweeps,
-                                  Pitfalls pitfalls = {}) {
-  std::vector<double> lambda(step.lambda_exp.data(), step.lambda_exp.data() + step.lambda_exp.size());
-  SweepResult result;
-  solver.solve(step.mlcp, lambda.data(), {sweeps, 0.0, false}, result, pitfalls);
-  return bytes_of(lambda.data(), lambda.size());
-}
-
-// λ after `sweeps` sweeps by a solver given a team of `threads`, and whether it swept on them.
-struct OnThreads {
-  std::vector<unsigned char> lambda;
-  bool swept_on_threads = false;
-};
-OnThreads solved_on_threads(int threads, const StepReport& step, int sweeps,
-                            Pitfalls pitfalls = {}) {
-  Workers workers(threads);
-  PgsSolver solver;
-  solver.use_workers(&workers);
-  OnThreads out;
-  out.lambda = solved(solver, step, sweeps, pitfalls);
-  out.swept_on_threads = solver.swept_on_threads();
-  return out;
 }
 
 // Five boxes falling apart in the air, those named in `thrown` thrown sideways at 1e308 m/s, the
@@ -250,132 +209,6 @@ TEST_SUITE("Threads") {
     }
   }
 
-  TEST_CASE("PGS swept on 2 and 3 threads gives the one-thread λ bit for bit") {
-    // The threads' order keeps every body's sequence of updates (pgs_solver.h): λ must be
-    // identical, not close. Two moments of the pyramid: early (landing) and settled.
-    for (const int steps : {3, 60}) {
-      const StepReport step = pyramid_mlcp(steps);
-      REQUIRE(step.mlcp.row_count() >= 1000);
-      PgsSolver one;
-      const std::vector<unsigned char> expected = solved(one, step, 8);
-      CHECK_FALSE(one.swept_on_threads());
-      for (const int threads : {2, 3}) {
-        CAPTURE(steps);
-        CAPTURE(threads);
-        const OnThreads plain = solved_on_threads(threads, step, 8);
-        CHECK(plain.lambda == expected);
-        CHECK(plain.swept_on_threads);  // the threads did sweep: the check can fail
-        // the pitfall clamp-increment sweeps on threads too, and keeps its own numbers
-        PgsSolver one_clamped;
-        Pitfalls clamp;
-        clamp.add(Pitfall::clamp_increment);
-        const OnThreads clamped = solved_on_threads(threads, step, 8, clamp);
-        CHECK(clamped.lambda == solved(one_clamped, step, 8, clamp));
-        CHECK(clamped.swept_on_threads);
-      }
-    }
-  }
-
-  TEST_CASE("PGS swept in two lanes on one thread gives the row-by-row sweeps' λ bit for bit") {
-    // The lanes keep every body's sequence of updates, as the threads do (pgs_solver.h): λ must
-    // be identical to the plain sweep's, row after row. Recording the sweeps forces the plain
-    // sweep (it measures the residual after each), and recording never changes λ.
-    for (const int steps : {3, 60}) {
-      const StepReport step = pyramid_mlcp(steps);
-      REQUIRE(step.mlcp.row_count() >= 1000);
-      for (const int sweeps : {2, 3, 8}) {
-        for (const bool clamped : {false, true}) {
-          CAPTURE(steps);
-          CAPTURE(sweeps);
-          CAPTURE(clamped);
-          Pitfalls pitfalls;
-          if (clamped) pitfalls.add(Pitfall::clamp_increment);
-          PgsSolver row_by_row;
-          std::vector<double> expected(step.lambda_exp.data(),
-                                       step.lambda_exp.data() + step.lambda_exp.size());
-          SweepResult recorded;
-          row_by_row.solve(step.mlcp, expected.data(), {sweeps, 0.0, true}, recorded, pitfalls);
-          CHECK_FALSE(row_by_row.swept_in_lanes());
-          PgsSolver lanes;
-          CHECK(solved(lanes, step, sweeps, pitfalls) == bytes_of(expected.data(), expected.size()));
-          CHECK(lanes.swept_in_lanes());  // the lanes did sweep: the check can fail
-        }
-      }
-    }
-  }
-
-  TEST_CASE("the parts' plan is kept while the rows' groups stay, and made again when they change") {
-    // A solver keeps the plans of the last two MLCPs it swept (part_plan.h). In its first step
-    // the same pyramid with two boxes swapped in the list has as many groups and rows (the
-    // same boxes touch), only other bodies in them: its plan must be made again, and each λ
-    // must be a fresh solver's bit for bit.
-    const StepReport placed = pyramid_mlcp(0);
-    Scene swapped_scene = builtin_scene("pyramid:20");
-    std::swap(swapped_scene.bodies[10], swapped_scene.bodies[100]);
-    const StepReport swapped = pyramid_mlcp(0, swapped_scene);
-    REQUIRE(swapped.mlcp.groups().size() == placed.mlcp.groups().size());
-    REQUIRE(swapped.mlcp.row_count() == placed.mlcp.row_count());
-    PgsSolver kept;
-    const auto solve_kept = [&](const StepReport& step, long plans_made) {
-      PgsSolver fresh;
-      CHECK(solved(kept, step, 8) == solved(fresh, step, 8));
-      CHECK(kept.swept_in_lanes());  // the plan was used: the checks can fail
-      CHECK(kept.plans_made() == plans_made);
-    };
-    solve_kept(placed, 1);
-    solve_kept(placed, 1);  // kept
-    solve_kept(swapped, 2);  // the same sizes, other groups: made again
-    solve_kept(placed, 2);  // the plan before it, kept beside it
-    solve_kept(swapped, 2);
-    solve_kept(pyramid_mlcp(60), 3);  // settled: other contacts
-    solve_kept(placed, 4);  // no longer among the last two
-  }
-
-  TEST_CASE("rows in no order of place are swept on one thread, to the same λ") {
-    // The pyramid's boxes listed in a shuffled order: a box's rows then share bodies with rows
-    // all over the order, the threads would wait at nearly every group, and the solver keeps to
-    // one thread.
-    Scene shuffled = builtin_scene("pyramid:20");
-    std::mt19937 rng(19);
-    std::shuffle(shuffled.bodies.begin() + 1, shuffled.bodies.end(), rng);  // the ground stays first
-    const StepReport step = pyramid_mlcp(30, shuffled);
-    REQUIRE(step.mlcp.row_count() >= 1000);
-    const OnThreads on_threads = solved_on_threads(2, step, 8);
-    PgsSolver one;
-    CHECK(on_threads.lambda == solved(one, step, 8));
-    CHECK_FALSE(on_threads.swept_on_threads);
-    CHECK_FALSE(one.swept_in_lanes());  // nor in two lanes
-  }
-
-  TEST_CASE("rows of a few boxes listed far from their neighbours: the threads' λ is one thread's") {
-    // A few of the pyramid's boxes swapped with others far away in the list: their rows then
-    // share bodies with runs that are not next to theirs, so the two lanes of a thread can both
-    // wait, each on a run of another thread (pgs_solver.h). A thread that then waited on one of
-    // them alone could wait forever (that run waiting, in turn, on the thread's other lane); the
-    // lanes must keep looking at both. Few enough swaps that the plan still sweeps on threads.
-    int on_threads_count = 0;
-    for (const unsigned seed : {1u, 2u, 3u, 4u, 5u, 6u, 7u, 8u}) {
-      for (const int swaps : {1, 2, 3}) {
-        Scene scene = builtin_scene("pyramid:20");
-        std::mt19937 rng(seed);
-        std::uniform_int_distribution<std::size_t> box(1, scene.bodies.size() - 1);
-        for (int k = 0; k < swaps; ++k) std::swap(scene.bodies[box(rng)], scene.bodies[box(rng)]);
-        const StepReport step = pyramid_mlcp(10, scene);
-        PgsSolver one;
-        const std::vector<unsigned char> expected = solved(one, step, 8);
-        for (const int threads : {2, 3}) {
-          CAPTURE(seed);
-          CAPTURE(swaps);
-          CAPTURE(threads);
-          const OnThreads on_threads = solved_on_threads(threads, step, 8);
-          CHECK(on_threads.lambda == expected);
-          if (on_threads.swept_on_threads) ++on_threads_count;
-        }
-      }
-    }
-    CHECK(on_threads_count >= 24);  // most of the 48 solves did go on threads: the check can fail
-    MESSAGE("solves on threads: " << on_threads_count << " of 48");
-  }
 
   TEST_CASE("a pyramid stepped on 2 and 3 threads keeps the one-thread state bit for bit") {
     // 120 steps of pyramid:20 (landing, then resting under the cache's warm start): the narrow

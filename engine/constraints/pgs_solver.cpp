@@ -251,9 +251,19 @@ template <int N, bool ClampIncrement>
 void PgsSolver::solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
                                  std::vector<Block<N>>& a_of_body, double* lambda, int sweeps) {
   a_of_body.assign(static_cast<std::size_t>(mlcp.body_count()), Block<N>::Zero());
-  for (int p = 0; p < 2 * workers_->count(); ++p) progress_[p].reset();
+  // From λ = 0 (split impulse's position solve starts there) a = B λ is the zero just made: pass
+  // 0 would add no term (add_row_term skips λ_i = 0), so it is skipped, and with it the pass of
+  // the wavefront that the parts spent waiting on each other in it. Every part then starts as
+  // if it had passed its groups in pass 0 (the waits read those counts).
+  const bool from_zero =
+      std::all_of(lambda, lambda + mlcp.row_count(), [](double l) { return l == 0.0; });
+  const long first_pass = from_zero ? 1 : 0;
+  for (int p = 0; p < 2 * workers_->count(); ++p) {
+    progress_[p].reset(from_zero ? plan_->first_group(p + 1) : 0);
+  }
   workers_->run([&](int t) {
-    sweep_in_lanes<N, ClampIncrement>(rows, mlcp.groups(), a_of_body.data(), lambda, t, 0, sweeps);
+    sweep_in_lanes<N, ClampIncrement>(rows, mlcp.groups(), a_of_body.data(), lambda, t,
+                                      first_pass, sweeps);
   });
 }
 

@@ -155,7 +155,9 @@ RunStarts run_starts(Workers* workers, Count&& count) {
 // line of its own.
 class alignas(64) Progress {
  public:
-  void reset() { value_.store(0, std::memory_order_relaxed); }
+  // Starts the count again at `value` (work taken as done before the pipeline starts), before
+  // the threads that publish and read it are started.
+  void reset(long value = 0) { value_.store(value, std::memory_order_relaxed); }
   void publish(long value) { value_.store(value, std::memory_order_release); }
   // The count now (acquire: what was written before it was published is seen).
   long value() const { return value_.load(std::memory_order_acquire); }
