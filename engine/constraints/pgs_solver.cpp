@@ -62,6 +62,13 @@ template <int N, bool ClampIncrement>
   if (c2 >= 0) a[c2] = e2;
 }
 
+// Whether λ is zero in every row (split impulse's position solve starts there): then a = B λ is
+// zero without reading a row (each row's term would be skipped: add_row_term), and on threads
+// the pass that makes it is skipped too.
+bool all_zero(const double* lambda, int count) {
+  return std::all_of(lambda, lambda + count, [](double l) { return l == 0.0; });
+}
+
 // The rows are swept in parts (threads, lanes) when there are a few hundred rows, and when the
 // parts seldom wait on each other (PartPlan::usable).
 constexpr int threaded_min_rows = 512;
@@ -251,12 +258,10 @@ template <int N, bool ClampIncrement>
 void PgsSolver::solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
                                  std::vector<Block<N>>& a_of_body, double* lambda, int sweeps) {
   a_of_body.assign(static_cast<std::size_t>(mlcp.body_count()), Block<N>::Zero());
-  // From λ = 0 (split impulse's position solve starts there) a = B λ is the zero just made: pass
-  // 0 would add no term (add_row_term skips λ_i = 0), so it is skipped, and with it the pass of
-  // the wavefront that the parts spent waiting on each other in it. Every part then starts as
-  // if it had passed its groups in pass 0 (the waits read those counts).
-  const bool from_zero =
-      std::all_of(lambda, lambda + mlcp.row_count(), [](double l) { return l == 0.0; });
+  // From λ = 0 a = B λ is the zero just made: pass 0 would add no term, so it is skipped, and
+  // with it the pass of the wavefront that the parts spent waiting on each other in it. Every
+  // part then starts as if it had passed its groups in pass 0 (the waits read those counts).
+  const bool from_zero = all_zero(lambda, mlcp.row_count());
   const long first_pass = from_zero ? 1 : 0;
   for (int p = 0; p < 2 * workers_->count(); ++p) {
     progress_[p].reset(from_zero ? plan_->first_group(p + 1) : 0);
@@ -292,6 +297,8 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
     // λ = λ_exp: a = B λ (the text's TransposeMultiply)
     if (pitfalls.has(Pitfall::lambda_b1)) {
       transpose_multiply_text_slip(rows, mlcp.body_count(), lambda, a_of_body);
+    } else if (all_zero(lambda, mlcp.row_count())) {
+      a_of_body.assign(static_cast<std::size_t>(mlcp.body_count()), Block<N>::Zero());
     } else {
       transpose_multiply(rows, mlcp.body_count(), lambda, a_of_body);
     }
