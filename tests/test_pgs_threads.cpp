@@ -153,17 +153,26 @@ TEST_SUITE("PGS on threads") {
     }
   }
 
-  TEST_CASE("the parts' plan is kept while the groups stay, and made again when they change") {
-    // A solver keeps the plans of the last two MLCPs it swept (part_plan.h). In its first step
-    // the same pyramid with two boxes swapped in the list has as many groups and rows (the
-    // same boxes touch), only other bodies in them: its plan must be made again, and each λ
-    // must be a fresh solver's bit for bit.
-    const StepReport placed = pyramid_mlcp(0);
+  TEST_CASE("a kept plan serves MLCPs whose groups are on the same bodies, and no others") {
+    // A solver keeps the last two plans it made (part_plan.h). In its first step the same
+    // pyramid with two boxes swapped in the list has as many groups and rows (the same boxes
+    // touch), only other bodies in them: its plan must be made again. A step's position MLCP
+    // (the contact rows alone, other rows in each group, the same bodies) and the settled
+    // pyramid's (other rows: pairs with one point or two) are served by the plan of the same
+    // bodies. Each λ must be a fresh solver's bit for bit.
+    const WorldReport first = pyramid_report(0);
+    const StepReport& placed = first.velocity;
     Scene swapped_scene = builtin_scene("pyramid:20");
     std::swap(swapped_scene.bodies[10], swapped_scene.bodies[100]);
     const StepReport swapped = pyramid_mlcp(0, swapped_scene);
     REQUIRE(swapped.mlcp.groups().size() == placed.mlcp.groups().size());
     REQUIRE(swapped.mlcp.row_count() == placed.mlcp.row_count());
+    Scene twice_swapped_scene = swapped_scene;
+    std::swap(twice_swapped_scene.bodies[20], twice_swapped_scene.bodies[150]);
+    const StepReport twice_swapped = pyramid_mlcp(0, twice_swapped_scene);
+    const StepReport settled = pyramid_mlcp(60);
+    REQUIRE(settled.mlcp.row_count() != placed.mlcp.row_count());
+    REQUIRE(first.position.mlcp.row_count() < placed.mlcp.row_count());
     PgsSolver kept;
     const auto solve_kept = [&](const StepReport& step, long plans_made) {
       PgsSolver fresh;
@@ -172,12 +181,13 @@ TEST_SUITE("PGS on threads") {
       CHECK(kept.plans_made() == plans_made);
     };
     solve_kept(placed, 1);
-    solve_kept(placed, 1);  // kept
-    solve_kept(swapped, 2);  // the same sizes, other groups: made again
+    solve_kept(first.position, 1);  // served by the velocity MLCP's plan
+    solve_kept(placed, 1);
+    solve_kept(swapped, 2);  // the same sizes, other bodies: made again
     solve_kept(placed, 2);  // the plan before it, kept beside it
-    solve_kept(swapped, 2);
-    solve_kept(pyramid_mlcp(60), 3);  // settled: other contacts
-    solve_kept(placed, 4);  // no longer among the last two
+    solve_kept(settled, 2);  // other rows, the same bodies
+    solve_kept(twice_swapped, 3);  // made again, in place of the older (swapped's)
+    solve_kept(swapped, 4);  // no longer among the last two
   }
 
   TEST_CASE("rows in no order of place are swept on one thread, to the same λ") {

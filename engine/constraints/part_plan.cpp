@@ -1,8 +1,6 @@
 #include "constraints/part_plan.h"
 
 #include <algorithm>
-#include <cstring>
-#include <type_traits>
 
 namespace lamina {
 namespace {
@@ -14,22 +12,23 @@ constexpr int max_wait_share = 8;
 
 }  // namespace
 
-bool PartPlan::made_for(const Mlcp& mlcp, int parts) const {
+bool PartPlan::serves(const Mlcp& mlcp, int parts) const {
   const std::vector<RowGroup>& groups = mlcp.groups();
-  if (parts != parts_ || mlcp.row_count() != rows_ || groups.size() != groups_.size()) {
-    return false;
+  if (parts != parts_ || groups.size() != bodies_.size()) return false;
+  const RowGroup* const group = groups.data();
+  const std::array<int, 2>* const bodies = bodies_.data();
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    if (group[g].bodies != bodies[g]) return false;
   }
-  // compared as bytes, a few thousand groups at a time: a RowGroup is its three ints, no padding
-  static_assert(std::has_unique_object_representations_v<RowGroup>);
-  return std::memcmp(groups.data(), groups_.data(), groups.size() * sizeof(RowGroup)) == 0;
+  return true;
 }
 
 bool PartPlan::make(const Mlcp& mlcp, int parts) {
   const std::vector<RowGroup>& groups = mlcp.groups();
   const int group_count = static_cast<int>(groups.size()) - 1;
   const long rows = mlcp.row_count();
-  groups_ = groups;
-  rows_ = rows;
+  bodies_.resize(groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g) bodies_[g] = groups[g].bodies;
   parts_ = parts;
   // the parts: consecutive groups, each part about its share of the rows; part t starts at the
   // first group whose first row r has min(parts − 1, r·parts/rows) ≥ t (r grows with g)

@@ -1,7 +1,11 @@
 // How PGS's rows are cut into parts (threads, or two lanes on one thread) and where each part
-// waits on another (pgs_solver.h): a pure function of the MLCP's groups (Mlcp::groups), its row
-// count and the number of parts. A plan is kept from solve to solve and made again only when one
-// of those changes: a pile at rest keeps its contact pairs, and so its groups, step after step.
+// waits on another (pgs_solver.h): made from the MLCP's groups (Mlcp::groups), its row count and
+// the number of parts. The parts and the waits are counted in groups, and the waits follow from
+// the groups' bodies alone, so a plan serves every MLCP whose groups are on the same bodies in
+// the same order, whatever their rows: a step's position MLCP (its velocity MLCP's contact rows,
+// a group for each pair in both) is swept by its velocity MLCP's plan, and a pile at rest keeps
+// its contact pairs, and so its plan, step after step. Only the cut between the parts, made by
+// rows, would have fallen a little elsewhere; any cut gives the same λ.
 #pragma once
 
 #include <array>
@@ -21,9 +25,9 @@ class PartPlan {
     std::array<long, 2> after{0, 0};
   };
 
-  // Whether this plan was made for `mlcp`'s groups and row count in `parts` parts: then make()
-  // would make it again, the same.
-  bool made_for(const Mlcp& mlcp, int parts) const;
+  // Whether this plan serves `mlcp` in `parts` parts: it was made for `parts` parts and groups
+  // on the same bodies, in the same order, as `mlcp`'s.
+  bool serves(const Mlcp& mlcp, int parts) const;
   // Cuts the groups into `parts` parts of consecutive groups, each about its share of the rows,
   // and finds the waits between them. Returns usable().
   bool make(const Mlcp& mlcp, int parts);
@@ -43,9 +47,8 @@ class PartPlan {
   bool waited_on(int group) const { return waited_on_[static_cast<std::size_t>(group)] != 0; }
 
  private:
-  // what the plan was made for
-  std::vector<RowGroup> groups_;
-  long rows_ = -1;
+  // what the plan was made for: each group's bodies, and the parts
+  std::vector<std::array<int, 2>> bodies_;
   int parts_ = 0;
   // the plan
   bool usable_ = false;

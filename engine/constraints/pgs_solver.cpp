@@ -54,8 +54,12 @@ template <int N, bool ClampIncrement>
     pgs_row<N, ClampIncrement>(rows[i], static_cast<std::size_t>(i), lambda, a1, a2);
     pgs_row<N, ClampIncrement>(rows[j], static_cast<std::size_t>(j), lambda, e1, e2);
   }
-  for (; i < i_end; ++i) pgs_row<N, ClampIncrement>(rows[i], static_cast<std::size_t>(i), lambda, a1, a2);
-  for (; j < j_end; ++j) pgs_row<N, ClampIncrement>(rows[j], static_cast<std::size_t>(j), lambda, e1, e2);
+  for (; i < i_end; ++i) {
+    pgs_row<N, ClampIncrement>(rows[i], static_cast<std::size_t>(i), lambda, a1, a2);
+  }
+  for (; j < j_end; ++j) {
+    pgs_row<N, ClampIncrement>(rows[j], static_cast<std::size_t>(j), lambda, e1, e2);
+  }
   a[b1] = a1;
   if (b2 >= 0) a[b2] = a2;
   a[c1] = e1;
@@ -85,7 +89,9 @@ void transpose_multiply_text_slip(const PackedRows<N>& rows, int body_count, con
   for (std::size_t i = 0; i < s; ++i) {
     const PackedRow<N>& row = rows[i];
     a[row.map[0]] += lambda[static_cast<std::size_t>(row.map[0]) % s] * row.B[0];
-    if (row.two_bodies()) a[row.map[1]] += lambda[static_cast<std::size_t>(row.map[1]) % s] * row.B[1];
+    if (row.two_bodies()) {
+      a[row.map[1]] += lambda[static_cast<std::size_t>(row.map[1]) % s] * row.B[1];
+    }
   }
 }
 
@@ -105,9 +111,10 @@ void PgsSolver::use_workers(Workers* workers) {
 
 bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {
   if (mlcp.row_count() < threaded_min_rows || !mlcp.friction_on_own_bodies()) return false;
-  // the MLCPs solved in turn (a step's velocity and position MLCPs) each find their own plan
+  // a plan kept for the MLCPs solved before, if one serves (a step's position MLCP is served by
+  // its velocity MLCP's plan), else a new one in place of the older
   for (PartPlan& plan : plans_) {
-    if (!plan.made_for(mlcp, parts)) continue;
+    if (!plan.serves(mlcp, parts)) continue;
     plan_ = &plan;
     return plan.usable();
   }
@@ -121,7 +128,8 @@ bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {
 // Flattened: the groups' passes inlined into the loop (called, they cost 6 % more
 // instructions on a pyramid).
 template <int N, bool ClampIncrement>
-[[gnu::flatten]] void PgsSolver::sweep(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
+[[gnu::flatten]] void PgsSolver::sweep(const PackedRows<N>& rows,
+                                       const std::vector<RowGroup>& groups,
                                        std::vector<Block<N>>& a_of_body, double* lambda) const {
   // raw pointers and the count read once: the stores to λ cannot then be taken to move them
   const RowGroup* group = groups.data();

@@ -102,8 +102,8 @@ class PgsSolver {
   bool swept_on_threads() const { return swept_on_threads_; }
   // Whether the last solve swept on one thread in two lanes (above).
   bool swept_in_lanes() const { return swept_in_lanes_; }
-  // How many times a plan of the parts has been made (PartPlan): once per MLCP whose groups
-  // differ from the last two planned.
+  // How many times a plan of the parts has been made (PartPlan): once per MLCP that neither of
+  // the last two plans serves (its groups on other bodies).
   long plans_made() const { return plans_made_; }
 
  private:
@@ -130,8 +130,8 @@ class PgsSolver {
   std::vector<Block<6>> general_a_;    // a in the general layout
   Workers* workers_ = nullptr;            // the threads, or none
   std::unique_ptr<Progress[]> progress_;  // per part: k·G + g + 1 once its pass k took group g
-  // The plans of the last two MLCPs planned (a step's velocity and position MLCPs, solved in
-  // turn), and the one the current solve sweeps by.
+  // The last two plans made (a step's velocity plan serves its position MLCP too, unless joints'
+  // rows add groups to the velocity MLCP alone), and the one the current solve sweeps by.
   std::array<PartPlan, 2> plans_;
   const PartPlan* plan_ = nullptr;
   long plans_made_ = 0;
