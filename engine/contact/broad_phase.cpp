@@ -22,6 +22,25 @@ void insertion_sort(std::vector<int>& order, const Before& before) {
   }
 }
 
+// The runs' counts per item (`of_run[t][i]`: how many places run t fills for item i) turned
+// into places: item i's begin at start[i], start[items] is the total, and within an item's the
+// runs' follow in order, `of_run[t][i]` becoming where run t's first goes. Listed item by item
+// and run by run, the places keep the order of one run after another.
+void places_by_item(PerRun<std::vector<int>>& of_run, int runs, std::size_t items,
+                    std::vector<int>& start) {
+  start.resize(items + 1);
+  int at = 0;
+  for (std::size_t i = 0; i < items; ++i) {
+    start[i] = at;
+    for (int t = 0; t < runs; ++t) {
+      const int count = of_run[t][i];
+      of_run[t][i] = at;
+      at += count;
+    }
+  }
+  start[items] = at;
+}
+
 // Horizontal bands of one height from the lowest box up. `of` never decreases as y grows, so a
 // box lies in the bands of(min.y) … of(max.y), and a height y within two boxes lies in a band
 // both of them are listed in.
@@ -122,16 +141,7 @@ void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
   });
   // where each band begins, and where in it each run's boxes begin (its fill)
   std::vector<int>& start = memory.band_start;
-  start.assign(static_cast<std::size_t>(bands.count) + 1, 0);
-  for (int b = 0; b < bands.count; ++b) {
-    int at = start[b];
-    for (int t = 0; t < runs; ++t) {
-      const int count = memory.band_fill_of_run[t][b];
-      memory.band_fill_of_run[t][b] = at;
-      at += count;
-    }
-    start[b + 1] = at;
-  }
+  places_by_item(memory.band_fill_of_run, runs, static_cast<std::size_t>(bands.count), start);
   memory.banded.resize(static_cast<std::size_t>(start.back()));
   memory.banded_body.resize(memory.banded.size());
   run_on(workers, [&](int t) {
@@ -169,18 +179,8 @@ void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
     for (const BodyPair& pair : memory.found_of_run[t]) ++count[pair.first];
   });
   std::vector<int>& first_start = memory.first_start;
-  first_start.resize(boxes.size() + 1);
-  int at = 0;
-  for (std::size_t b = 0; b < boxes.size(); ++b) {
-    first_start[b] = at;
-    for (int t = 0; t < runs; ++t) {
-      const int count = memory.first_next_of_run[t][b];
-      memory.first_next_of_run[t][b] = at;
-      at += count;
-    }
-  }
-  first_start[boxes.size()] = at;
-  pairs.resize(static_cast<std::size_t>(at));
+  places_by_item(memory.first_next_of_run, runs, boxes.size(), first_start);
+  pairs.resize(static_cast<std::size_t>(first_start.back()));
   run_on(workers, [&](int t) {
     std::vector<int>& next = memory.first_next_of_run[t];
     for (const BodyPair& pair : memory.found_of_run[t]) pairs[next[pair.first]++] = pair;
