@@ -164,16 +164,41 @@ TEST_SUITE("Threads") {
     CHECK(mismatches == 0);
   }
 
-  TEST_CASE("each run's items go after the runs before it: run_starts") {
-    // counts 3, 0 and 5 (each run counting on its own thread): starts 0, 3, 3 and the total 8
+  TEST_CASE("a team's thread t takes runs t and 2T − 1 − t of the 2T runs, each once") {
+    // 3 threads: 6 runs, thread 0 runs 0 and 5 (on the calling thread), 1 runs 1 and 4, 2 runs 2
+    // and 3 — the parts PGS's threads take (test_pgs_threads), so each thread reads again what it
+    // wrote in the pieces before
     Workers workers(3);
-    const std::array<std::size_t, 3> counts{3, 0, 5};
+    REQUIRE(runs_on(&workers) == 6);
+    CHECK(runs_on(nullptr) == 1);
+    std::array<std::thread::id, 6> ran_on{};
+    std::array<std::atomic<int>, 6> calls{};
+    run_on(&workers, [&](int run) {
+      ran_on[static_cast<std::size_t>(run)] = std::this_thread::get_id();
+      ++calls[static_cast<std::size_t>(run)];
+    });
+    for (const std::atomic<int>& c : calls) CHECK(c.load() == 1);
+    CHECK(ran_on[0] == std::this_thread::get_id());
+    CHECK(ran_on[5] == ran_on[0]);
+    CHECK(ran_on[4] == ran_on[1]);
+    CHECK(ran_on[3] == ran_on[2]);
+    CHECK(ran_on[1] != ran_on[0]);
+    CHECK(ran_on[2] != ran_on[0]);
+    CHECK(ran_on[2] != ran_on[1]);
+    int alone = -1;
+    run_on(nullptr, [&](int run) { alone = run; });
+    CHECK(alone == 0);  // no team: one run, on the calling thread
+  }
+
+  TEST_CASE("each run's items go after the runs before it: run_starts") {
+    // 6 runs of 3 threads counting 3, 0, 5, 1, 0 and 4 (each on its own thread): starts 0, 3, 3,
+    // 8, 9, 9 and the total 13
+    Workers workers(3);
+    const std::array<std::size_t, 6> counts{3, 0, 5, 1, 0, 4};
     const RunStarts starts =
-        run_starts(&workers, [&](int t) { return counts[static_cast<std::size_t>(t)]; });
-    CHECK(starts[0] == 0);
-    CHECK(starts[1] == 3);
-    CHECK(starts[2] == 3);
-    CHECK(starts[3] == 8);
+        run_starts(&workers, [&](int run) { return counts[static_cast<std::size_t>(run)]; });
+    const std::array<std::size_t, 7> expected{0, 3, 3, 8, 9, 9, 13};
+    for (std::size_t r = 0; r < expected.size(); ++r) CHECK(starts[r] == expected[r]);
     CHECK(run_starts(nullptr, [](int) { return std::size_t{7}; })[1] == 7);  // one run, no team
   }
 

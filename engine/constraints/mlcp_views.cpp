@@ -141,21 +141,23 @@ void Mlcp::add_constraint_forces(std::vector<RigidBody>& bodies, const double* l
     });
     return;
   }
-  // Each run adds to its share of the bodies only (the share each run integrates), taking the
-  // groups that touch them in row order: every body's sum in the one-thread order.
-  run_on(workers, [&](int t) {
-    const std::pair<std::size_t, std::size_t> share = share_of(bodies.size(), t, runs);
-    const std::size_t first = share.first;  // named, not bound: a lambda may not capture a binding
-    const std::size_t last = share.second;
+  // Each thread adds to the bodies of its two runs only (the shares it integrates), taking the
+  // groups that touch them in row order: every body's sum in the one-thread order. One walk of
+  // the groups a thread, not one a run.
+  workers->run([&](int t) {
+    const std::array<int, 2> own_runs = runs_of_thread(t, runs);
+    const std::array<std::pair<std::size_t, std::size_t>, 2> shares{
+        share_of(bodies.size(), own_runs[0], runs), share_of(bodies.size(), own_runs[1], runs)};
     const auto own = [&](int body) {
       const auto at = static_cast<std::size_t>(body);
-      return body >= 0 && at >= first && at < last;
+      return body >= 0 && ((at >= shares[0].first && at < shares[0].second) ||
+                           (at >= shares[1].first && at < shares[1].second));
     };
     visit([&](const auto& rows) {
       for (std::size_t g = 0; g + 1 < groups_.size(); ++g) {
         const std::array<int, 2> pair = groups_[g].bodies;
         if (!own(pair[0]) && !own(pair[1])) continue;
-        // eq. 3-11: F_c = Jᵀ λ, this run's blocks of it
+        // eq. 3-11: F_c = Jᵀ λ, this thread's blocks of it
         for_each_force(rows, lambda, groups_[g].first, groups_[g + 1].first,
                        [&](int body, double l, const auto& J) {
                          if (own(body)) add_wrench(bodies[body], l, J);

@@ -106,7 +106,7 @@ void PgsSolver::use_workers(Workers* workers) {
   if (workers == nullptr || workers->count() < 2) workers = nullptr;
   if (workers == workers_) return;
   workers_ = workers;
-  progress_.reset(workers_ != nullptr ? new Progress[2 * workers_->count()] : nullptr);  // a part
+  progress_.reset(workers_ != nullptr ? new Progress[runs_on(workers_)] : nullptr);  // per part
 }
 
 bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {
@@ -163,7 +163,7 @@ template <int N, bool ClampIncrement>
   const long group_count = static_cast<long>(groups.size()) - 1;
   // each lane's part, its next pass k and group g, and its count k·G + g + 1 of the last group
   // passed (when the first pass is a sweep, pass 0 was done before); an empty lane is done
-  const std::array<int, 2> part{t, plan_->parts() - 1 - t};
+  const std::array<int, 2> part = runs_of_thread(t, plan_->parts());
   std::array<long, 2> pass{first_pass, first_pass};
   std::array<int, 2> next{};
   std::array<long, 2> passed{};
@@ -271,7 +271,7 @@ void PgsSolver::solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
   // part then starts as if it had passed its groups in pass 0 (the waits read those counts).
   const bool from_zero = all_zero(lambda, mlcp.row_count());
   const long first_pass = from_zero ? 1 : 0;
-  for (int p = 0; p < 2 * workers_->count(); ++p) {
+  for (int p = 0; p < runs_on(workers_); ++p) {
     progress_[p].reset(from_zero ? plan_->first_group(p + 1) : 0);
   }
   workers_->run([&](int t) {
@@ -284,7 +284,7 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
                       SweepResult& result, Pitfalls pitfalls) {
   const bool measure = settings.record_sweeps || settings.tolerance > 0.0;
   const bool plain = measure || pitfalls.has(Pitfall::lambda_b1);
-  const bool threaded = workers_ != nullptr && !plain && plan_parts(mlcp, 2 * workers_->count());
+  const bool threaded = workers_ != nullptr && !plain && plan_parts(mlcp, runs_on(workers_));
   const bool in_lanes = !threaded && !plain && settings.iterations >= 2 && plan_parts(mlcp, 2);
   const bool clamp_increment = pitfalls.has(Pitfall::clamp_increment);
   swept_on_threads_ = threaded;

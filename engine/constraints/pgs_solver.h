@@ -12,10 +12,10 @@
 //
 // On more than one thread (use_workers) the rows are cut into two parts a thread, each a run of
 // consecutive rows, and thread t of T sweeps parts t and 2T − 1 − t, sweep after sweep (below:
-// why these two). A row waits only
-// where the row before it on one of its bodies, in the one-thread order (this sweep's, or the
-// sweep before's), belongs to another part: until that part has swept it (its own thread's other
-// part, or another thread's). So every a_b a row reads holds the value it holds in the
+// why these two; every other piece of a step takes its runs so, runs_of_thread). A row waits
+// only where the row before it on one of its bodies, in the one-thread order (this sweep's, or
+// the sweep before's), belongs to another part: until that part has swept it (its own thread's
+// other part, or another thread's). So every a_b a row reads holds the value it holds in the
 // one-thread order, and so does every λ (a friction row's contact rows are on its bodies): λ is
 // the same bit for bit on any number of threads. Contact rows come in the order of their bodies'
 // indices, so in a scene built bottom up (a pyramid, a stack) a part shares bodies with the parts

@@ -84,15 +84,28 @@ class Workers {
   std::vector<std::exception_ptr> failures_;  // per thread, what its share threw
 };
 
-// How many runs a piece of work is cut into on `workers`: one per thread, or one (nullptr).
-inline int runs_on(const Workers* workers) { return workers != nullptr ? workers->count() : 1; }
+// How many runs a piece of work is cut into on `workers`: two per thread, or one (nullptr).
+// Thread t of T takes runs t and 2T − 1 − t (runs_of_thread), one from each end of the items'
+// order, as PGS takes its parts of the rows (constraints/pgs_solver.h: from both ends of its
+// wavefront). A step's bodies, pairs and rows follow one order (a pile's from the ground up), so
+// cut the same way in every piece, each thread reads mostly what it wrote itself in the pieces
+// before, from its own core's cache; with one run a thread, PGS's first thread swept rows that
+// the second had packed (docs/performance.md, "Two threads").
+inline int runs_on(const Workers* workers) { return workers != nullptr ? 2 * workers->count() : 1; }
 
-// Calls task(t) for each run t of runs_on(workers): on the workers' threads (Workers::run), or
-// task(0) on the calling thread when there are none.
+// The two runs (or parts) that thread t takes of `runs`, two per thread: t and runs − 1 − t.
+inline std::array<int, 2> runs_of_thread(int t, int runs) { return {t, runs - 1 - t}; }
+
+// Calls task(r) for each run r of runs_on(workers): on the workers' threads (Workers::run), each
+// thread its two runs (runs_of_thread) one after the other, or task(0) on the calling thread when
+// there are none.
 template <class Task>
 void run_on(Workers* workers, Task&& task) {
   if (workers != nullptr) {
-    workers->run(task);
+    const int runs = runs_on(workers);
+    workers->run([&](int t) {
+      for (const int run : runs_of_thread(t, runs)) task(run);
+    });
   } else {
     task(0);
   }
@@ -140,7 +153,7 @@ std::pair<std::size_t, std::size_t> share_of(std::size_t count, int part, int pa
 // starts[t] is run t's first place, starts[runs] the total. Each run counts its own items
 // (count(t) on its own thread), so that what it reads to count them stays in the cache of the
 // core that will write them next, not in the first thread's.
-using RunStarts = std::array<std::size_t, 65>;  // per run (at most 64 threads), and the end
+using RunStarts = std::array<std::size_t, 129>;  // per run (64 threads at most), and the end
 template <class Count>
 RunStarts run_starts(Workers* workers, Count&& count) {
   RunStarts starts{};
