@@ -172,7 +172,7 @@ template <int N, bool ClampIncrement>
     passed[u] = (first_pass - 1) * group_count + plan_->first_group(part[u] + 1);
     if (plan_->first_group(part[u]) == plan_->first_group(part[u] + 1)) pass[u] = sweeps + 1;
   }
-  std::array<long, 128> seen{};  // the last count read from each other part (64 threads at most)
+  std::array<long, max_runs> seen{};  // the last count read from each other part (a run each)
   // 0: lane u's next group may go; −1: the lane is done; else the part it waits for, + 1
   const auto waits_for = [&](int u) {
     if (pass[u] > sweeps) return -1;

@@ -25,8 +25,9 @@ bool is_planar(const RigidBody& b) {
 
 void validate(const WorldSettings& s) {
   validate(s.step);
-  require(s.threads >= 1 && s.threads <= 64,
-          "world: threads must be 1 to 64, got " + std::to_string(s.threads));
+  require(s.threads >= 1 && s.threads <= max_threads,
+          "world: threads must be 1 to " + std::to_string(max_threads) + ", got " +
+              std::to_string(s.threads));
   require(s.position_iterations >= 1,
           "world: position_iterations must be ≥ 1, got " + std::to_string(s.position_iterations));
   validate(s.contact);
@@ -264,7 +265,7 @@ void World::remember_lambdas(WorldReport* report) {
 void World::find_non_finite_body() {
   // each run its share of the bodies, the share it integrated; then the first of the runs' firsts
   const int runs = runs_on(workers_.get());
-  std::array<std::size_t, 64> first_of_run{};  // per run (at most 64); bodies_.size(): none
+  std::array<std::size_t, max_runs> first_of_run{};  // per run; bodies_.size(): none
   run_on(workers_.get(), [&](int t) {
     const auto [first, last] = share_of(bodies_.size(), t, runs);
     std::size_t i = first;

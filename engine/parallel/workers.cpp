@@ -13,8 +13,9 @@
 namespace lamina {
 
 Workers::Workers(int threads) {
-  if (threads < 1 || threads > 64) {
-    throw std::invalid_argument("threads must be 1 to 64, got " + std::to_string(threads));
+  if (threads < 1 || threads > max_threads) {
+    throw std::invalid_argument("threads must be 1 to " + std::to_string(max_threads) + ", got " +
+                                std::to_string(threads));
   }
   spins_ = fits_cores(threads);
   failures_.resize(static_cast<std::size_t>(threads));

@@ -19,10 +19,15 @@
 
 namespace lamina {
 
+// The largest team, and so at most 2 × 64 runs of a piece of work (runs_on).
+constexpr int max_threads = 64;
+constexpr int max_runs = 2 * max_threads;
+
 class Workers {
  public:
   // A team of `threads` threads in all: the calling thread and threads − 1 started here, which
-  // wait until run() gives them work. Throws std::invalid_argument unless 1 ≤ threads ≤ 64.
+  // wait until run() gives them work. Throws std::invalid_argument unless
+  // 1 ≤ threads ≤ max_threads.
   explicit Workers(int threads);
   ~Workers();
   Workers(const Workers&) = delete;
@@ -153,7 +158,7 @@ std::pair<std::size_t, std::size_t> share_of(std::size_t count, int part, int pa
 // starts[t] is run t's first place, starts[runs] the total. Each run counts its own items
 // (count(t) on its own thread), so that what it reads to count them stays in the cache of the
 // core that will write them next, not in the first thread's.
-using RunStarts = std::array<std::size_t, 129>;  // per run (64 threads at most), and the end
+using RunStarts = std::array<std::size_t, max_runs + 1>;  // per run, and the end
 template <class Count>
 RunStarts run_starts(Workers* workers, Count&& count) {
   RunStarts starts{};
