@@ -237,8 +237,8 @@ TEST_SUITE("Threads") {
 
   TEST_CASE("the largest team, 64 threads in 128 runs, steps a pile as one thread does") {
     // Every piece of the step cut into 128 runs (most of them empty for a pyramid of 10 boxes):
-    // the runs' tables hold them all (under ASan a table of 64 runs is written past its end),
-    // and the state is the one-thread state bit for bit.
+    // the runs' tables hold them all (with the sanitizers on, UBSan stops at a table of 64 runs
+    // indexed past its end), and the state is the one-thread state bit for bit.
     World one = world_of("pyramid:4", "pgs", 1);
     World team = world_of("pyramid:4", "pgs", max_threads);
     for (int k = 0; k < 5; ++k) {
