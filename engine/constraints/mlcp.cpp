@@ -60,12 +60,6 @@ bool inertia_in_plane(const RigidBody& body) {
   return body.inverse_inertia_world(0, 2) == 0.0 && body.inverse_inertia_world(1, 2) == 0.0;
 }
 
-// Whether two rows are on the same bodies, in the same order (compared element by element:
-// std::array's == becomes a call to memcmp here, a tenth of the packing's instructions).
-bool same_bodies(const std::array<int, 2>& a, const std::array<int, 2>& b) {
-  return a[0] == b[0] && a[1] == b[1];
-}
-
 // Whether a friction row — row i on bodies `map`, bounded by rows friction_of ..
 // friction_of + count − 1 — has its contact rows before it on its own bodies, map_at(k) giving
 // row k's bodies; true for a row that is no friction row (friction_of < 0).

@@ -47,6 +47,13 @@ struct RowGroup {
   std::array<int, 2> bodies{-1, -1};  // Jmap of its rows
 };
 
+// Whether two rows or groups are on the same bodies, in the same order (compared element by
+// element: std::array's == becomes a call to memcmp, a tenth of the packing's instructions and
+// two thirds of a plan's, PartPlan::serves). Inlined: met once per row or group.
+inline bool same_bodies(const std::array<int, 2>& a, const std::array<int, 2>& b) {
+  return a[0] == b[0] && a[1] == b[1];
+}
+
 // Where rows go as they are written: a vector of ConstraintRows (the text's form), or an MLCP
 // being assembled, which packs each row as it comes (Mlcp::assemble with a RowWriter) so that
 // a step's many contact rows are never stored twice.

@@ -18,7 +18,7 @@ bool PartPlan::serves(const Mlcp& mlcp, int parts) const {
   const RowGroup* const group = groups.data();
   const std::array<int, 2>* const bodies = bodies_.data();
   for (std::size_t g = 0; g < groups.size(); ++g) {
-    if (group[g].bodies != bodies[g]) return false;
+    if (!same_bodies(group[g].bodies, bodies[g])) return false;
   }
   return true;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <type_traits>
 
 namespace lamina {
 namespace {
@@ -31,39 +32,63 @@ void pass_group(const PackedRow<N>* rows, int first, int last, Block<N>* a, doub
   if (b2 >= 0) a[b2] = a2;
 }
 
-// One pass over two groups at once, of different lanes and on different bodies: row j of the
-// first group, then row j of the second, each the arithmetic of pgs_row on its own group's a_b,
-// so that the two chains of arithmetic overlap (a group has one to three rows).
-template <int N, bool ClampIncrement>
-[[gnu::always_inline]] inline void pass_two_groups(const PackedRow<N>* rows, const RowGroup* group,
-                                                   int first, int second, Block<N>* a,
-                                                   double* lambda) {
-  const int b1 = rows[group[first].first].map[0];
-  const int b2 = rows[group[first].first].map[1];
-  const int c1 = rows[group[second].first].map[0];
-  const int c2 = rows[group[second].first].map[1];
-  Block<N> a1 = a[b1];
-  Block<N> a2 = b2 >= 0 ? a[b2] : Block<N>::Zero();
-  Block<N> e1 = a[c1];
-  Block<N> e2 = c2 >= 0 ? a[c2] : Block<N>::Zero();
-  int i = group[first].first;
-  int j = group[second].first;
-  const int i_end = group[first + 1].first;
-  const int j_end = group[second + 1].first;
+}  // namespace
+
+// An MLCP as a thread's lanes sweep it: its rows, groups, a and λ, the plan of its parts, each
+// part's Progress (nullptr on one thread), the pass its lanes start at (0: a = B λ first) and
+// the sweeps.
+template <int N>
+struct PgsSolver::Swept {
+  const PackedRow<N>* rows = nullptr;
+  const RowGroup* groups = nullptr;
+  long group_count = 0;
+  Block<N>* a = nullptr;
+  double* lambda = nullptr;
+  const PartPlan* plan = nullptr;
+  Progress* progress = nullptr;
+  long first_pass = 1;
+  int sweeps = 0;
+};
+
+namespace {
+
+// One pass over two groups at once, of different lanes and on different bodies (of one MLCP, or
+// of two swept side by side): row j of the first group, then row j of the second, each the
+// arithmetic of pgs_row on its own group's a_b, so that the two chains of arithmetic overlap (a
+// group has one to three rows).
+template <int N, bool ClampIncrement, class Swept>
+[[gnu::always_inline]] inline void pass_two_groups(const Swept& p, int first, const Swept& q,
+                                                   int second) {
+  const PackedRow<N>* const p_rows = p.rows;
+  const PackedRow<N>* const q_rows = q.rows;
+  const int b1 = p_rows[p.groups[first].first].map[0];
+  const int b2 = p_rows[p.groups[first].first].map[1];
+  const int c1 = q_rows[q.groups[second].first].map[0];
+  const int c2 = q_rows[q.groups[second].first].map[1];
+  Block<N> a1 = p.a[b1];
+  Block<N> a2 = b2 >= 0 ? p.a[b2] : Block<N>::Zero();
+  Block<N> e1 = q.a[c1];
+  Block<N> e2 = c2 >= 0 ? q.a[c2] : Block<N>::Zero();
+  int i = p.groups[first].first;
+  int j = q.groups[second].first;
+  const int i_end = p.groups[first + 1].first;
+  const int j_end = q.groups[second + 1].first;
+  double* const p_lambda = p.lambda;
+  double* const q_lambda = q.lambda;
   for (; i < i_end && j < j_end; ++i, ++j) {
-    pgs_row<N, ClampIncrement>(rows[i], static_cast<std::size_t>(i), lambda, a1, a2);
-    pgs_row<N, ClampIncrement>(rows[j], static_cast<std::size_t>(j), lambda, e1, e2);
+    pgs_row<N, ClampIncrement>(p_rows[i], static_cast<std::size_t>(i), p_lambda, a1, a2);
+    pgs_row<N, ClampIncrement>(q_rows[j], static_cast<std::size_t>(j), q_lambda, e1, e2);
   }
   for (; i < i_end; ++i) {
-    pgs_row<N, ClampIncrement>(rows[i], static_cast<std::size_t>(i), lambda, a1, a2);
+    pgs_row<N, ClampIncrement>(p_rows[i], static_cast<std::size_t>(i), p_lambda, a1, a2);
   }
   for (; j < j_end; ++j) {
-    pgs_row<N, ClampIncrement>(rows[j], static_cast<std::size_t>(j), lambda, e1, e2);
+    pgs_row<N, ClampIncrement>(q_rows[j], static_cast<std::size_t>(j), q_lambda, e1, e2);
   }
-  a[b1] = a1;
-  if (b2 >= 0) a[b2] = a2;
-  a[c1] = e1;
-  if (c2 >= 0) a[c2] = e2;
+  p.a[b1] = a1;
+  if (b2 >= 0) p.a[b2] = a2;
+  q.a[c1] = e1;
+  if (c2 >= 0) q.a[c2] = e2;
 }
 
 // Whether λ is zero in every row (split impulse's position solve starts there): then a = B λ is
@@ -101,12 +126,17 @@ template <>
 std::vector<Block<3>>& PgsSolver::a<3>() { return planar_a_; }
 template <>
 std::vector<Block<6>>& PgsSolver::a<6>() { return general_a_; }
+template <>
+std::vector<Block<3>>& PgsSolver::first_a_of<3>() { return first_planar_a_; }
+template <>
+std::vector<Block<6>>& PgsSolver::first_a_of<6>() { return first_general_a_; }
 
 void PgsSolver::use_workers(Workers* workers) {
   if (workers == nullptr || workers->count() < 2) workers = nullptr;
   if (workers == workers_) return;
   workers_ = workers;
-  progress_.reset(workers_ != nullptr ? new Progress[runs_on(workers_)] : nullptr);  // per part
+  // per part of each of two MLCPs (solve_both)
+  progress_.reset(workers_ != nullptr ? new Progress[2 * runs_on(workers_)] : nullptr);
 }
 
 bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {
@@ -140,115 +170,153 @@ template <int N, bool ClampIncrement>
   }
 }
 
-// Passes `first_pass` to `sweeps` over the groups of parts t and P − 1 − t of the plan's P parts
-// (from both ends of the wavefront: pgs_solver.h), taken as two lanes (pass 0 is a = B λ,
-// passes 1, 2, … the sweeps). Each lane goes as far as its waits allow: on
-// the other lane, through the lanes' own counts of groups passed; on another thread's part,
-// through that part's Progress. A lane's wait is looked at only where a run of its groups starts
+// Thread t's lanes of `count` MLCPs (one, or two side by side): of each, parts t and P − 1 − t
+// of its plan's P parts (from both ends of the wavefront: pgs_solver.h), each lane taking
+// passes `first_pass` to `sweeps` over its part's groups (pass 0 is a = B λ, passes 1, 2, … the
+// sweeps). Each lane goes as far as its waits allow: on the thread's other lane of the same
+// MLCP, through the lanes' own counts of groups passed; on another thread's part, through that
+// part's Progress. A lane's wait is looked at only where a run of its groups starts
 // (PartPlan::run_end: a group that waits starts a run, and a run ends after a group that
 // another part waits for); the groups after the first of a run wait on no other part. Each step
-// takes the next run of each lane that may go, both side by side as far as the shorter goes
-// where both can (pass_two_groups). Each lane starts once the groups its first groups share
-// bodies with have been passed (about a pass of the part before it), then the two go side by
-// side. Some lane can always go, or will once another thread has got further: the first of all
+// takes the next run of the first two lanes that may go, the first MLCP's lanes first — both
+// side by side as far as the shorter goes where two can (pass_two_groups), else the one alone.
+// Each lane starts once the groups its first groups share bodies with have been passed (about a
+// pass of the part before it); the second MLCP's lanes fill the time the first's wait. Some lane
+// can always go, or will once another thread has got further: of each MLCP, the first of all
 // the parts' next groups in the one-thread order has every group before it on its bodies behind
 // it.
 template <int N, bool ClampIncrement>
-[[gnu::flatten]] void PgsSolver::sweep_in_lanes(const PackedRows<N>& rows,
-                                                const std::vector<RowGroup>& groups,
-                                                Block<N>* a, double* lambda, int t,
-                                                long first_pass, int sweeps) const {
-  const RowGroup* group = groups.data();
-  const PartPlan::GroupWait* waits = plan_->waits();
-  const long group_count = static_cast<long>(groups.size()) - 1;
-  // each lane's part, its next pass k and group g, and its count k·G + g + 1 of the last group
-  // passed (when the first pass is a sweep, pass 0 was done before); an empty lane is done
-  const std::array<int, 2> part = runs_of_thread(t, plan_->parts());
-  std::array<long, 2> pass{first_pass, first_pass};
-  std::array<int, 2> next{};
-  std::array<long, 2> passed{};
-  for (int u = 0; u < 2; ++u) {
-    next[u] = plan_->first_group(part[u]);
-    passed[u] = (first_pass - 1) * group_count + plan_->first_group(part[u] + 1);
-    if (plan_->first_group(part[u]) == plan_->first_group(part[u] + 1)) pass[u] = sweeps + 1;
+[[gnu::flatten]] void PgsSolver::sweep_in_lanes(const Swept<N>* swept, int count, int t) const {
+  // a lane: its MLCP and part, its part's groups [begin, end), its next pass and group, and its
+  // count k·G + g + 1 of the last group passed (when the first pass is a sweep, pass 0 was done
+  // before); an empty lane is done
+  struct Lane {
+    const Swept<N>* m;
+    int part;
+    int begin;
+    int end;
+    long pass;
+    int next;
+    long passed;
+  };
+  std::array<Lane, 4> lane{};
+  const int lanes = 2 * count;
+  for (int s = 0; s < count; ++s) {
+    const Swept<N>& m = swept[s];
+    const std::array<int, 2> part = runs_of_thread(t, m.plan->parts());
+    for (int k = 0; k < 2; ++k) {
+      Lane& l = lane[static_cast<std::size_t>(2 * s + k)];
+      l.m = &m;
+      l.part = part[k];
+      l.begin = m.plan->first_group(part[k]);
+      l.end = m.plan->first_group(part[k] + 1);
+      l.pass = l.begin == l.end ? m.sweeps + 1 : m.first_pass;
+      l.next = l.begin;
+      l.passed = (m.first_pass - 1) * m.group_count + l.end;
+    }
   }
-  std::array<long, max_runs> seen{};  // the last count read from each other part (a run each)
-  // 0: lane u's next group may go; −1: the lane is done; else the part it waits for, + 1
+  // the last count read from each other part of each MLCP (a run each)
+  std::array<std::array<long, max_runs>, 2> seen{};
+  // what lane u's next group waits on: nothing (go), this thread's other lane of its MLCP, or
+  // another thread's part; or the lane is done
+  enum class Wait { go, own_lane, other_thread, done };
   const auto waits_for = [&](int u) {
-    if (pass[u] > sweeps) return -1;
-    const PartPlan::GroupWait& wait = waits[next[u]];
+    const Lane& l = lane[static_cast<std::size_t>(u)];
+    const Swept<N>& m = *l.m;
+    if (l.pass > m.sweeps) return Wait::done;
+    const PartPlan::GroupWait& wait = m.plan->waits()[l.next];
+    const Lane& other = lane[static_cast<std::size_t>(u ^ 1)];  // the same MLCP's other lane
     for (int e = 0; e < 2; ++e) {
       const int v = wait.part[e];
       if (v < 0) continue;
-      const long needed = pass[u] * group_count + wait.after[e];
-      if (v == part[0] || v == part[1]) {  // this thread's other lane
-        if (passed[v == part[0] ? 0 : 1] < needed) return v + 1;
-      } else if (seen[v] < needed) {
-        seen[v] = progress_[v].value();
-        if (seen[v] < needed) return v + 1;
+      const long needed = l.pass * m.group_count + wait.after[e];
+      if (v == other.part) {
+        if (other.passed < needed) return Wait::own_lane;
+      } else {
+        long& seen_v = seen[static_cast<std::size_t>(u / 2)][static_cast<std::size_t>(v)];
+        if (seen_v < needed) {
+          seen_v = m.progress[v].value();
+          if (seen_v < needed) return Wait::other_thread;
+        }
       }
     }
-    return 0;
+    return Wait::go;
   };
   // lane u's next run of groups (PartPlan::run_end), cut at its part's end: the first may wait,
   // the others need not be looked at
   const auto run_length = [&](int u) {
-    return std::min(plan_->run_end(next[u]), plan_->first_group(part[u] + 1)) - next[u];
+    const Lane& l = lane[static_cast<std::size_t>(u)];
+    return std::min(l.m->plan->run_end(l.next), l.end) - l.next;
   };
   const auto take = [&](int u, int n) {  // lane u's next n groups, alone
-    for (int g = next[u]; g < next[u] + n; ++g) {
-      if (pass[u] == 0) {
-        pass_group<N, ClampIncrement, Pass::transpose>(rows.data(), group[g].first,
-                                                       group[g + 1].first, a, lambda);
+    const Lane& l = lane[static_cast<std::size_t>(u)];
+    const Swept<N>& m = *l.m;
+    for (int g = l.next; g < l.next + n; ++g) {
+      if (l.pass == 0) {
+        pass_group<N, ClampIncrement, Pass::transpose>(m.rows, m.groups[g].first,
+                                                       m.groups[g + 1].first, m.a, m.lambda);
       } else {
-        pass_group<N, ClampIncrement, Pass::sweep>(rows.data(), group[g].first,
-                                                   group[g + 1].first, a, lambda);
+        pass_group<N, ClampIncrement, Pass::sweep>(m.rows, m.groups[g].first,
+                                                   m.groups[g + 1].first, m.a, m.lambda);
       }
     }
   };
   const auto advance = [&](int u, int n) {  // lane u has passed its next n groups
-    next[u] += n;
-    passed[u] = pass[u] * group_count + next[u];
-    if (progress_ != nullptr && plan_->waited_on(next[u] - 1)) {
-      progress_[part[u]].publish(passed[u]);  // only its last group may be waited for
+    Lane& l = lane[static_cast<std::size_t>(u)];
+    const Swept<N>& m = *l.m;
+    l.next += n;
+    l.passed = l.pass * m.group_count + l.next;
+    if (m.progress != nullptr && m.plan->waited_on(l.next - 1)) {
+      m.progress[l.part].publish(l.passed);  // only its last group may be waited for
     }
-    if (next[u] == plan_->first_group(part[u] + 1)) {
-      next[u] = plan_->first_group(part[u]);
-      ++pass[u];
+    if (l.next == l.end) {
+      l.next = l.begin;
+      ++l.pass;
     }
   };
-  int waiting_turns = 0;  // looks in a row at two lanes that both wait
-  while (pass[0] <= sweeps || pass[1] <= sweeps) {
-    const int wait0 = waits_for(0);
-    const int wait1 = waits_for(1);
-    const bool go0 = wait0 == 0;
-    const bool go1 = wait1 == 0;
-    if (go0 && go1 && pass[0] > 0 && pass[1] > 0) {
+  int waiting_turns = 0;  // looks in a row at lanes that all wait
+  for (;;) {
+    std::array<int, 2> go{};
+    int found = 0;
+    bool left = false;         // a lane not done
+    bool on_other = false;     // a lane that waits on another thread's part
+    for (int u = 0; u < lanes && found < 2; ++u) {
+      const Wait wait = waits_for(u);
+      if (wait == Wait::done) continue;
+      left = true;
+      if (wait == Wait::go) go[static_cast<std::size_t>(found++)] = u;
+      if (wait == Wait::other_thread) on_other = true;
+    }
+    if (!left) return;
+    if (found == 2 && lane[go[0]].pass > 0 && lane[go[1]].pass > 0) {
       // the two runs side by side, as far as the shorter goes
-      const int n = std::min(run_length(0), run_length(1));
-      for (int k = 0; k < n; ++k) {
-        pass_two_groups<N, ClampIncrement>(rows.data(), group, next[0] + k, next[1] + k, a,
-                                           lambda);
+      const Lane& l0 = lane[static_cast<std::size_t>(go[0])];
+      const Lane& l1 = lane[static_cast<std::size_t>(go[1])];
+      const int n = std::min(run_length(go[0]), run_length(go[1]));
+      if (l0.m == l1.m) {  // one MLCP's two lanes: its arrays read once for both (fewer registers)
+        const Swept<N>& m = *l0.m;
+        for (int k = 0; k < n; ++k) {
+          pass_two_groups<N, ClampIncrement>(m, l0.next + k, m, l1.next + k);
+        }
+      } else {
+        for (int k = 0; k < n; ++k) {
+          pass_two_groups<N, ClampIncrement>(*l0.m, l0.next + k, *l1.m, l1.next + k);
+        }
       }
-      advance(0, n);
-      advance(1, n);
-    } else if (go0 || go1) {
-      for (int u = 0; u < 2; ++u) {
-        if (u == 0 ? !go0 : !go1) continue;
-        const int n = run_length(u);
-        take(u, n);
-        advance(u, n);
+      advance(go[0], n);
+      advance(go[1], n);
+    } else if (found > 0) {
+      for (int k = 0; k < found; ++k) {
+        const int n = run_length(go[static_cast<std::size_t>(k)]);
+        take(go[static_cast<std::size_t>(k)], n);
+        advance(go[static_cast<std::size_t>(k)], n);
       }
     } else {
-      // both wait, one at least on another thread's part (else the plan is wrong): look at
-      // both again after a moment. Not waiting on that part alone: it may be waiting, in turn,
-      // on this thread's other lane, which is free to go once its own wait is over.
-      const auto other_thread = [&](int wait) {
-        return wait > 0 && wait - 1 != part[0] && wait - 1 != part[1];
-      };
-      const bool on_other_thread = other_thread(wait0) || other_thread(wait1);
-      if (!on_other_thread || progress_ == nullptr) {
-        throw std::logic_error("PGS's two lanes both wait on each other: their plan is wrong");
+      // every lane waits, one at least on another thread's part (else the plan is wrong): look
+      // at them all again after a moment. Not waiting on that part alone: it may be waiting, in
+      // turn, on one of this thread's lanes, which is free to go once its own wait is over.
+      if (!on_other || swept[0].progress == nullptr) {
+        throw std::logic_error("PGS's lanes all wait on each other: their plan is wrong");
       }
       workers_->wait_a_turn(waiting_turns);
       continue;
@@ -257,27 +325,44 @@ template <int N, bool ClampIncrement>
   }
 }
 
-// On the workers' threads: a = B λ (pass 0), then `sweeps` sweeps (passes 1, 2, …), thread t
-// taking parts t and 2T − 1 − t as two lanes (sweep_in_lanes), pass after pass, and waiting where
-// plan_parts found a group of another thread's part before one of its own. Each part starts
-// pass k once the part before it has passed the rows its first rows share bodies with: a
-// wavefront, each part at most a pass behind the one before it.
+template <int N>
+PgsSolver::Swept<N> PgsSolver::swept(const Mlcp& mlcp, const PackedRows<N>& rows,
+                                     std::vector<Block<N>>& a_of_body, double* lambda, int sweeps,
+                                     int index) const {
+  Swept<N> m;
+  m.rows = rows.data();
+  m.groups = mlcp.groups().data();
+  m.group_count = static_cast<long>(mlcp.groups().size()) - 1;
+  m.a = a_of_body.data();
+  m.lambda = lambda;
+  m.plan = plan_;
+  m.progress = workers_ != nullptr ? progress_.get() + index * runs_on(workers_) : nullptr;
+  m.sweeps = sweeps;
+  return m;
+}
+
+// On the workers' threads: for each MLCP, a = B λ (pass 0), then its sweeps (passes 1, 2, …),
+// thread t taking parts t and 2T − 1 − t of each as lanes (sweep_in_lanes), pass after pass,
+// and waiting where plan_parts found a group of another thread's part before one of its own.
+// Each part starts pass k once the part before it has passed the rows its first rows share
+// bodies with: a wavefront, each part at most a pass behind the one before it. Each MLCP's a
+// must be sized and zero.
 template <int N, bool ClampIncrement>
-void PgsSolver::solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
-                                 std::vector<Block<N>>& a_of_body, double* lambda, int sweeps) {
-  a_of_body.assign(static_cast<std::size_t>(mlcp.body_count()), Block<N>::Zero());
-  // From λ = 0 a = B λ is the zero just made: pass 0 would add no term, so it is skipped, and
-  // with it the pass of the wavefront that the parts spent waiting on each other in it. Every
-  // part then starts as if it had passed its groups in pass 0 (the waits read those counts).
-  const bool from_zero = all_zero(lambda, mlcp.row_count());
-  const long first_pass = from_zero ? 1 : 0;
-  for (int p = 0; p < runs_on(workers_); ++p) {
-    progress_[p].reset(from_zero ? plan_->first_group(p + 1) : 0);
+void PgsSolver::solve_on_threads(Swept<N>* swept, int count) {
+  for (int s = 0; s < count; ++s) {
+    Swept<N>& m = swept[s];
+    // From λ = 0 a = B λ is the zero it starts as: pass 0 would add no term, so it is skipped,
+    // and with it the pass of the wavefront that the parts spent waiting on each other in it.
+    // Every part then starts as if it had passed its groups in pass 0 (the waits read those
+    // counts).
+    const int rows = m.groups[m.group_count].first;
+    const bool from_zero = all_zero(m.lambda, rows);
+    m.first_pass = from_zero ? 1 : 0;
+    for (int p = 0; p < m.plan->parts(); ++p) {
+      m.progress[p].reset(from_zero ? m.plan->first_group(p + 1) : 0);
+    }
   }
-  workers_->run([&](int t) {
-    sweep_in_lanes<N, ClampIncrement>(rows, mlcp.groups(), a_of_body.data(), lambda, t,
-                                      first_pass, sweeps);
-  });
+  workers_->run([&](int t) { sweep_in_lanes<N, ClampIncrement>(swept, count, t); });
 }
 
 void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& settings,
@@ -294,10 +379,12 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
     planar_ = N == 3;
     std::vector<Block<N>>& a_of_body = a<N>();
     if (threaded) {
+      a_of_body.assign(static_cast<std::size_t>(mlcp.body_count()), Block<N>::Zero());
+      Swept<N> m = swept(mlcp, rows, a_of_body, lambda, settings.iterations, 0);
       if (clamp_increment) {
-        solve_on_threads<N, true>(mlcp, rows, a_of_body, lambda, settings.iterations);
+        solve_on_threads<N, true>(&m, 1);
       } else {
-        solve_on_threads<N, false>(mlcp, rows, a_of_body, lambda, settings.iterations);
+        solve_on_threads<N, false>(&m, 1);
       }
       result.iterations = settings.iterations;
       return;
@@ -311,12 +398,11 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
       transpose_multiply(rows, mlcp.body_count(), lambda, a_of_body);
     }
     if (in_lanes) {
+      const Swept<N> m = swept(mlcp, rows, a_of_body, lambda, settings.iterations, 0);
       if (clamp_increment) {
-        sweep_in_lanes<N, true>(rows, mlcp.groups(), a_of_body.data(), lambda, 0, 1,
-                                 settings.iterations);
+        sweep_in_lanes<N, true>(&m, 1, 0);
       } else {
-        sweep_in_lanes<N, false>(rows, mlcp.groups(), a_of_body.data(), lambda, 0, 1,
-                                 settings.iterations);
+        sweep_in_lanes<N, false>(&m, 1, 0);
       }
       result.iterations = settings.iterations;
       return;
@@ -337,6 +423,78 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
       if (settings.tolerance > 0.0 && r <= settings.tolerance) break;
     }
   });
+}
+
+void PgsSolver::solve_both(const Mlcp& first, double* first_lambda,
+                           const SweepSettings& first_settings, SweepResult& first_result,
+                           const Mlcp& second, double* second_lambda,
+                           const SweepSettings& second_settings, SweepResult& second_result,
+                           Pitfalls pitfalls) {
+  const auto plain = [&](const SweepSettings& settings) {
+    return settings.record_sweeps || settings.tolerance > 0.0 || settings.iterations < 2;
+  };
+  // side by side when each would be swept in parts by the same count of parts (each MLCP's
+  // plan kept: a second plan made goes in the other place)
+  const int parts = workers_ != nullptr ? runs_on(workers_) : 2;
+  const PartPlan* first_plan = nullptr;
+  bool side_by_side = !plain(first_settings) && !plain(second_settings) &&
+                      !pitfalls.has(Pitfall::lambda_b1) && plan_parts(first, parts);
+  if (side_by_side) {
+    first_plan = plan_;
+    side_by_side = plan_parts(second, parts);
+  }
+  swept_side_by_side_ = false;
+  first.visit([&](const auto& first_rows) {
+    second.visit([&](const auto& second_rows) {
+      using FirstRows = std::decay_t<decltype(first_rows)>;
+      if constexpr (std::is_same_v<FirstRows, std::decay_t<decltype(second_rows)>>) {
+        if (!side_by_side) return;
+        constexpr int N = FirstRows::value_type::size;
+        const bool clamp_increment = pitfalls.has(Pitfall::clamp_increment);
+        std::vector<Block<N>>& second_a = a<N>();
+        std::vector<Block<N>>& first_a = first_a_of<N>();
+        std::array<Swept<N>, 2> m;
+        first_a.assign(static_cast<std::size_t>(first.body_count()), Block<N>::Zero());
+        second_a.assign(static_cast<std::size_t>(second.body_count()), Block<N>::Zero());
+        m[1] = swept(second, second_rows, second_a, second_lambda, second_settings.iterations, 1);
+        plan_ = first_plan;
+        m[0] = swept(first, first_rows, first_a, first_lambda, first_settings.iterations, 0);
+        if (workers_ != nullptr) {
+          if (clamp_increment) {
+            solve_on_threads<N, true>(m.data(), 2);
+          } else {
+            solve_on_threads<N, false>(m.data(), 2);
+          }
+        } else {
+          // one thread: a = B λ made before the lanes, as solve() makes it
+          for (int s = 0; s < 2; ++s) {
+            const Mlcp& mlcp = s == 0 ? first : second;
+            std::vector<Block<N>>& a_of_body = s == 0 ? first_a : second_a;
+            if (!all_zero(m[s].lambda, mlcp.row_count())) {
+              transpose_multiply(s == 0 ? first_rows : second_rows, mlcp.body_count(),
+                                 m[s].lambda, a_of_body);
+            }
+          }
+          if (clamp_increment) {
+            sweep_in_lanes<N, true>(m.data(), 2, 0);
+          } else {
+            sweep_in_lanes<N, false>(m.data(), 2, 0);
+          }
+        }
+        planar_ = N == 3;
+        swept_side_by_side_ = true;
+      }
+    });
+  });
+  if (!swept_side_by_side_) {
+    solve(first, first_lambda, first_settings, first_result, pitfalls);
+    solve(second, second_lambda, second_settings, second_result, pitfalls);
+    return;
+  }
+  swept_on_threads_ = workers_ != nullptr;
+  swept_in_lanes_ = workers_ == nullptr;
+  first_result.iterations = first_settings.iterations;
+  second_result.iterations = second_settings.iterations;
 }
 
 Vec6 PgsSolver::velocity_change(int body) const {

@@ -28,6 +28,12 @@
 // The cut and the waits (part_plan.h) are kept from solve to solve while the rows' groups stay
 // the same, as a resting pile's do.
 //
+// Two MLCPs that share no λ (a step's velocity MLCP and split impulse's position MLCP, whose ζ
+// does not depend on the velocity λ) can be solved side by side (solve_both): each thread then
+// has two lanes of each, and takes the second MLCP's where the first's wait — at the wavefront's
+// fill and drain, where a thread used to wait for a part a pass behind or ahead of its own.
+// Each MLCP's rows are swept in the order solve() sweeps them, so λ is the same bit for bit.
+//
 // A thread's two parts are two lanes: its sweeps take a group of each lane at once where neither
 // waits on the other (pass_two_groups: their rows interleaved, two independent chains of
 // arithmetic that the processor overlaps), and a group alone where one does; the waits are
@@ -88,6 +94,14 @@ class PgsSolver {
   // Of the pitfalls (motion/pitfalls.h), lambda-b1 and clamp-increment are read here.
   void solve(const Mlcp& mlcp, double* lambda, const SweepSettings& settings, SweepResult& result,
              Pitfalls pitfalls = {});
+  // solve(first, …) and then solve(second, …), the same λ of each bit for bit, for two MLCPs on
+  // the same bodies whose λ are independent: side by side (above) when both would be swept in
+  // parts (on threads, or in two lanes) and neither is measured; else one after the other.
+  // velocity_change() is then the second's.
+  void solve_both(const Mlcp& first, double* first_lambda, const SweepSettings& first_settings,
+                  SweepResult& first_result, const Mlcp& second, double* second_lambda,
+                  const SweepSettings& second_settings, SweepResult& second_result,
+                  Pitfalls pitfalls = {});
 
   // (B λ)_b after the last sweep of the last solve: body b's velocity change per Δt from the
   // rows, [v; ω].
@@ -100,6 +114,8 @@ class PgsSolver {
   void use_workers(Workers* workers);
   // Whether the last solve swept on the workers' threads.
   bool swept_on_threads() const { return swept_on_threads_; }
+  // Whether the last solve_both swept its two MLCPs side by side.
+  bool swept_side_by_side() const { return swept_side_by_side_; }
   // Whether the last solve swept on one thread in two lanes (above).
   bool swept_in_lanes() const { return swept_in_lanes_; }
   // How many times a plan of the parts has been made (PartPlan): once per MLCP that neither of
@@ -109,6 +125,8 @@ class PgsSolver {
  private:
   template <int N>
   std::vector<Block<N>>& a();
+  template <int N>
+  std::vector<Block<N>>& first_a_of();  // solve_both's first MLCP's a
   // The rows' groups cut into `parts` parts and the waits between them (plan_, kept or made);
   // false when the rows are too few or would wait too often (then one thread and one lane are
   // faster).
@@ -116,20 +134,29 @@ class PgsSolver {
   template <int N, bool ClampIncrement>
   void sweep(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
              std::vector<Block<N>>& a_of_body, double* lambda) const;
+  // An MLCP as its lanes sweep it (pgs_solver.cpp).
+  template <int N>
+  struct Swept;
   template <int N, bool ClampIncrement>
-  void sweep_in_lanes(const PackedRows<N>& rows, const std::vector<RowGroup>& groups, Block<N>* a,
-                      double* lambda, int t, long first_pass, int sweeps) const;
+  void sweep_in_lanes(const Swept<N>* swept, int count, int t) const;
+  // The sweeps of `count` MLCPs (one, or two side by side) on the workers' threads.
   template <int N, bool ClampIncrement>
-  void solve_on_threads(const Mlcp& mlcp, const PackedRows<N>& rows,
-                        std::vector<Block<N>>& a_of_body, double* lambda, int sweeps);
+  void solve_on_threads(Swept<N>* swept, int count);
+  template <int N>
+  Swept<N> swept(const Mlcp& mlcp, const PackedRows<N>& rows, std::vector<Block<N>>& a_of_body,
+                 double* lambda, int sweeps, int index) const;
 
   bool planar_ = true;                 // the layout of the last solve
   bool swept_on_threads_ = false;      // how the last solve swept
   bool swept_in_lanes_ = false;
+  bool swept_side_by_side_ = false;
   std::vector<Block<3>> planar_a_;     // a in the planar layout
   std::vector<Block<6>> general_a_;    // a in the general layout
+  std::vector<Block<3>> first_planar_a_;   // solve_both's first MLCP's a, in each layout (the
+  std::vector<Block<6>> first_general_a_;  // second's is the last solve's: planar_a_, general_a_)
   Workers* workers_ = nullptr;            // the threads, or none
-  std::unique_ptr<Progress[]> progress_;  // per part: k·G + g + 1 once its pass k took group g
+  // per MLCP swept at once and per part: k·G + g + 1 once its pass k took group g
+  std::unique_ptr<Progress[]> progress_;
   // The last two plans made (a step's velocity plan serves its position MLCP too, unless joints'
   // rows add groups to the velocity MLCP alone), and the one the current solve sweeps by.
   std::array<PartPlan, 2> plans_;

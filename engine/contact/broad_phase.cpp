@@ -114,17 +114,21 @@ void sort_and_sweep(const std::vector<Aabb>& boxes, SweepMemory& memory,
   const auto before = [&](int a, int b) {
     return boxes[a].min.x() < boxes[b].min.x() || (boxes[a].min.x() == boxes[b].min.x() && a < b);
   };
-  if (order.size() != boxes.size()) {
-    order.resize(boxes.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), before);
-  } else {
-    insertion_sort(order, before);
-  }
+  const auto sort = [&] {
+    if (order.size() != boxes.size()) {
+      order.resize(boxes.size());
+      std::iota(order.begin(), order.end(), 0);
+      std::sort(order.begin(), order.end(), before);
+    } else {
+      insertion_sort(order, before);
+    }
+  };
   // 2. the boxes band by band, each band's in x order, side by side for the sweep. Each run
   // takes a run of the x order: it counts its boxes in each band, then lists them there after
-  // the runs before it, so that each band's boxes stay in x order.
-  const Bands bands = choose_bands(boxes, memory.heights);
+  // the runs before it, so that each band's boxes stay in x order. The bands are chosen while
+  // the boxes are sorted (neither splits into runs; the bands read only the boxes).
+  Bands bands;
+  run_side_by_side(workers, sort, [&] { bands = choose_bands(boxes, memory.heights); });
   const int runs = runs_on(workers);
   memory.band_fill_of_run.resize(runs);
   memory.reach.resize(order.size());

@@ -36,18 +36,28 @@ void solve_recording(PgsSolver& pgs, const Mlcp& mlcp, int iterations, std::vect
 void SplitImpulse::solve(const Mlcp& velocity, const std::vector<ContactPair>& pairs,
                          const ContactSettings& contact, const StepSettings& step, int iterations,
                          PgsSolver& pgs, StepReport* report, Workers* workers) {
+  if (!prepare(velocity, pairs, contact, step, report != nullptr, workers)) return;
+  solve_recording(pgs, position_, iterations, lambda_, report, step.pitfalls);
+  take_push_out(pgs, step.dt, workers);
+}
+
+bool SplitImpulse::prepare(const Mlcp& velocity, const std::vector<ContactPair>& pairs,
+                           const ContactSettings& contact, const StepSettings& step,
+                           bool reporting, Workers* workers) {
   push_out_.clear();
-  if (contact.correction != PositionCorrection::split_impulse) return;
-  const double dt = step.dt;
+  if (contact.correction != PositionCorrection::split_impulse) return false;
   // The velocity MLCP's contact rows again, each asking J V_p ≥ its push-out (or gap) ζ
   position_targets(pairs, contact, step, rows_, zeta_, workers);
-  if (report == nullptr && nothing_to_push(zeta_)) return;  // a report shows the sweeps
+  if (!reporting && nothing_to_push(zeta_)) return false;  // a report shows the sweeps
   // eq. 3-16 for the push-out alone: the bodies start from rest under no force, so η = ζ/Δt
-  position_.assemble_rows_of(velocity, rows_, zeta_, dt, workers);
+  position_.assemble_rows_of(velocity, rows_, zeta_, step.dt, workers);
   lambda_.assign(rows_.size(), 0.0);
-  solve_recording(pgs, position_, iterations, lambda_, report, step.pitfalls);
+  return true;
+}
+
+void SplitImpulse::take_push_out(const PgsSolver& pgs, double dt, Workers* workers) {
   // The push-out velocity of each body: M⁻¹ Jᵀ λ Δt = B λ Δt (each run of the workers its share)
-  push_out_.resize(static_cast<std::size_t>(velocity.body_count()));
+  push_out_.resize(static_cast<std::size_t>(position_.body_count()));
   const int runs = runs_on(workers);
   run_on(workers, [&](int t) {
     const auto [first, last] = share_of(push_out_.size(), t, runs);

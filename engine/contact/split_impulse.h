@@ -31,6 +31,20 @@ class SplitImpulse {
   void solve(const Mlcp& velocity, const std::vector<ContactPair>& pairs,
              const ContactSettings& contact, const StepSettings& step, int iterations,
              PgsSolver& pgs, StepReport* report, Workers* workers = nullptr);
+
+  // solve() in three steps, for a caller that solves the position MLCP itself (the World's
+  // step solves it beside the velocity MLCP: its ζ does not depend on the velocity λ).
+  // 1. The position MLCP made ready, λ = 0: false, and push_out() empty, when solve() would
+  // solve nothing (`reporting`: a report is being made, which shows the sweeps all the same).
+  bool prepare(const Mlcp& velocity, const std::vector<ContactPair>& pairs,
+               const ContactSettings& contact, const StepSettings& step, bool reporting,
+               Workers* workers = nullptr);
+  // 2. The MLCP to solve, and its λ, solved in place.
+  const Mlcp& position() const { return position_; }
+  std::vector<double>& lambda() { return lambda_; }
+  // 3. Each body's push-out from the solution, `pgs`'s last solve having been the position
+  // MLCP's (its B λ).
+  void take_push_out(const PgsSolver& pgs, double dt, Workers* workers = nullptr);
   // Each body's push-out [v; ω] in m/s and rad/s, or empty for none.
   const std::vector<Vec6>& push_out() const { return push_out_; }
 

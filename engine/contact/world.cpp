@@ -221,13 +221,29 @@ void World::build_rows() {
 }
 
 void World::solve(WorldReport* report) {
+  // Split impulse's position MLCP first: its ζ does not depend on the velocity λ, so that
+  // without a report both are solved side by side (PgsSolver::solve_both)
+  const bool push = split_impulse_.prepare(velocity_, cache_.pairs(), settings_.contact,
+                                           settings_.step, report != nullptr, workers_.get());
+  const Pitfalls pitfalls = settings_.step.pitfalls;
   // eq. 3-24 by Projected Gauss-Seidel, friction bounds ±μ λc read as λc changes
-  solve_recording(pgs_, velocity_, settings_.step.iterations, lambda_,
-                  report != nullptr ? &report->velocity : nullptr, settings_.step.pitfalls);
+  if (push && report == nullptr) {
+    SweepResult velocity_sweeps;
+    SweepResult position_sweeps;
+    pgs_.solve_both(velocity_, lambda_.data(), {settings_.step.iterations, 0.0, false},
+                    velocity_sweeps, split_impulse_.position(), split_impulse_.lambda().data(),
+                    {settings_.position_iterations, 0.0, false}, position_sweeps, pitfalls);
+  } else {
+    solve_recording(pgs_, velocity_, settings_.step.iterations, lambda_,
+                    report != nullptr ? &report->velocity : nullptr, pitfalls);
+    if (push) {
+      solve_recording(pgs_, split_impulse_.position(), settings_.position_iterations,
+                      split_impulse_.lambda(), report != nullptr ? &report->position : nullptr,
+                      pitfalls);
+    }
+  }
   remember_lambdas(report);
-  split_impulse_.solve(velocity_, cache_.pairs(), settings_.contact, settings_.step,
-                       settings_.position_iterations, pgs_,
-                       report != nullptr ? &report->position : nullptr, workers_.get());
+  if (push) split_impulse_.take_push_out(pgs_, settings_.step.dt, workers_.get());
 }
 
 void World::take_method_step(WorldReport* report) {

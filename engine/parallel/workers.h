@@ -116,6 +116,23 @@ void run_on(Workers* workers, Task&& task) {
   }
 }
 
+// Calls first() and second(), two pieces of work independent of each other: side by side on
+// the first two threads of `workers` (the others idle), or one after the other on the calling
+// thread when there are not two. For serial work between a step's pieces that splits no
+// further, so that the team's second thread is not left waiting through all of it.
+template <class First, class Second>
+void run_side_by_side(Workers* workers, First&& first, Second&& second) {
+  if (workers != nullptr && workers->count() >= 2) {
+    workers->run([&](int t) {
+      if (t == 0) first();
+      if (t == 1) second();
+    });
+  } else {
+    first();
+    second();
+  }
+}
+
 // One T for each run of a team, each on cache lines of its own: runs that keep writing to their
 // own T (a vector's end, as they append to it) then never take a line from each other. (Side by
 // side in a std::vector, two runs' vectors share a line, and each append of one waits for the
