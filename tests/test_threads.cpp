@@ -248,6 +248,33 @@ TEST_SUITE("Threads") {
     CHECK(state_bytes(team) == state_bytes(one));
   }
 
+  TEST_CASE("the two solves side by side keep the state of a reported step, which takes turns") {
+    // Without a report a World sweeps split impulse's position MLCP beside the velocity MLCP
+    // (PgsSolver::solve_both); a reported step solves the two one after the other, recording
+    // each. 60 steps of pyramid:40, whose bottom contacts sink past the slop (a push-out on most
+    // steps: docs/performance.md), must give the same state bit for bit, on one thread and on
+    // two, by `pgs` and by `islands` (one island, swept by PGS).
+    for (const std::string solver : {"pgs", "islands"}) {
+      for (const int threads : {1, 2}) {
+        CAPTURE(solver);
+        CAPTURE(threads);
+        World plain = world_of("pyramid:40", solver, threads);
+        World reported = world_of("pyramid:40", solver, 1);
+        int pushed = 0;  // steps whose position MLCP was large enough to sweep in parts, and moved
+        for (int k = 0; k < 60; ++k) {
+          plain.step();
+          WorldReport report;
+          reported.step(report);
+          const StepReport& position = report.position;
+          if (position.mlcp.row_count() >= 512 && !position.solution.lambda.isZero(0.0)) ++pushed;
+        }
+        CHECK(state_bytes(plain) == state_bytes(reported));
+        CHECK(pushed >= 30);  // the position MLCP was solved on most steps: the check can fail
+        MESSAGE(solver << " on " << threads << ": " << pushed << " of 60 steps pushed out");
+      }
+    }
+  }
+
   TEST_CASE("a pyramid stepped on 2 and 3 threads keeps the one-thread state bit for bit") {
     // 120 steps of pyramid:20 (landing, then resting under the cache's warm start): the narrow
     // phase split between the threads, the MLCPs packed and the velocity and position sweeps

@@ -22,24 +22,53 @@ class IslandMethod final : public StepMethod {
  public:
   void take_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
                  std::vector<double>& lambda, WorldReport* report) override {
+    const WorldSettings& s = problem.settings;
     skip_.assign(bodies.size(), 0);
     pgs_.use_workers(problem.workers);  // a large island's sweeps, and the push-out's, on them
     islands_.find(problem.velocity, problem.first_joint_row);
     if (work_.size() < islands_.size()) work_.resize(islands_.size());
+    // Without a report, the largest island that PGS sweeps (past the exact solve's size) is
+    // swept last, beside split impulse's position MLCP, made ready first (its ζ does not depend
+    // on the velocity λ); the islands' order changes no number, their rows and bodies apart.
+    std::size_t beside = islands_.size();
+    if (report == nullptr) {
+      for (std::size_t k = 0; k < islands_.size(); ++k) {
+        const Island& island = islands_.begin()[k];
+        if (island.lcp_size <= exact_island_limit) continue;
+        const bool larger = beside == islands_.size() ||
+                            island.rows.size() > islands_.begin()[beside].rows.size();
+        if (larger) beside = k;
+      }
+    }
+    const bool push_out_taken = beside < islands_.size();
+    const bool to_push = push_out_taken && split_.prepare(problem.velocity, problem.pairs,
+                                                          s.contact, s.step, false,
+                                                          problem.workers);
     for (std::size_t k = 0; k < islands_.size(); ++k) {
       const Island& island = islands_.begin()[k];
+      if (k == beside) continue;
       if (island.joint_rows > 0 && island.lcp_size <= exact_island_limit) {
         substep(problem, island, work_[k], bodies, lambda);
         for (const int b : island.bodies) skip_[static_cast<std::size_t>(b)] = 1;
       } else {
-        solve_island(problem.velocity, island, problem.settings.step.iterations, work_[k], pgs_,
-                     lambda, problem.settings.step.pitfalls);
+        solve_island(problem.velocity, island, s.step.iterations, work_[k], pgs_, lambda,
+                     s.step.pitfalls);
       }
+    }
+    if (to_push) {
+      solve_island_beside(problem.velocity, islands_.begin()[beside], s.step.iterations,
+                          work_[beside], pgs_, lambda, split_, s.position_iterations,
+                          s.step.pitfalls);
+      split_.take_push_out(pgs_, s.step.dt, problem.workers);
+    } else if (push_out_taken) {
+      // nothing to push out (split_.prepare left the push-out empty): the island alone
+      solve_island(problem.velocity, islands_.begin()[beside], s.step.iterations, work_[beside],
+                   pgs_, lambda, s.step.pitfalls);
     }
     if (report != nullptr) {
       report->velocity.solution.residuals = {problem.velocity.residual(lambda.data())};
     }
-    finish_step(problem, bodies, lambda, skip_, split_, pgs_, report);
+    finish_step(problem, bodies, lambda, skip_, split_, pgs_, report, push_out_taken);
     const std::vector<Vec6>& push = split_.push_out();
     if (push.empty()) return;
     for (std::size_t b = 0; b < bodies.size(); ++b) {

@@ -40,12 +40,23 @@ IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Isl
                          PgsSolver& pgs, std::vector<double>& lambda, Pitfalls pitfalls = {},
                          bool try_exact = true);
 
+// An island that PGS sweeps (more variables than exact_island_limit), swept beside split
+// impulse's position MLCP, made ready by split.prepare() (PgsSolver::solve_both: the position
+// MLCP's parts fill the island's waits on threads). The island's λ and the position MLCP's are
+// those of two solves one after the other, bit for bit; `pgs`'s last solve is then the
+// position MLCP's, so that split.take_push_out() reads it.
+void solve_island_beside(const Mlcp& mlcp, const Island& island, int sweeps,
+                         IslandWorkspace& work, PgsSolver& pgs, std::vector<double>& lambda,
+                         SplitImpulse& split, int position_sweeps, Pitfalls pitfalls = {});
+
 // Steps 6 and 7 after the velocity solve: the split-impulse push-out (when the settings ask for
-// it, recorded in the report), F_c = Jᵀ λ and chapter 2's step for every body whose `skip` entry
-// is 0 (skip empty: every body); a skipped body (advanced by the method itself) only has its
-// forces cleared.
+// it, recorded in the report; unless `push_out_taken`, the method having taken it already:
+// solve_island_beside), F_c = Jᵀ λ and chapter 2's step for every body whose `skip` entry is 0
+// (skip empty: every body); a skipped body (advanced by the method itself) only has its forces
+// cleared.
 void finish_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
                  const std::vector<double>& lambda, const std::vector<unsigned char>& skip,
-                 SplitImpulse& split, PgsSolver& pgs, WorldReport* report);
+                 SplitImpulse& split, PgsSolver& pgs, WorldReport* report,
+                 bool push_out_taken = false);
 
 }  // namespace lamina
