@@ -72,7 +72,7 @@ class IslandMethod final : public StepMethod {
     const std::vector<Vec6>& push = split_.push_out();
     if (push.empty()) return;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-      if (skip_[b]) push_out_body(bodies[b], push[b], problem.settings.step.dt, problem.settings.step.pitfalls);
+      if (skip_[b]) push_out_body(bodies[b], push[b], s.step.dt, s.step.pitfalls);
     }
   }
 
@@ -92,7 +92,8 @@ class IslandMethod final : public StepMethod {
       rows_.push_back(problem.velocity.row(r));
     }
     for (ConstraintRow& row : rows_) {
-      if (row.friction_of >= 0) row.friction_of = local_of_[static_cast<std::size_t>(row.friction_of)];
+      if (row.friction_of < 0) continue;
+      row.friction_of = local_of_[static_cast<std::size_t>(row.friction_of)];
     }
     // Each joint of the island and where its rows sit among the island's.
     joints_.clear();
@@ -103,7 +104,9 @@ class IslandMethod final : public StepMethod {
       }
     }
     external_.clear();  // F_ext, kept for every substep
-    for (const int b : island.bodies) external_.push_back(external_force_of(bodies[static_cast<std::size_t>(b)]));
+    for (const int b : island.bodies) {
+      external_.push_back(external_force_of(bodies[static_cast<std::size_t>(b)]));
+    }
     local_.clear();
     for (const int r : island.rows) local_.push_back(lambda[static_cast<std::size_t>(r)]);
     mean_.assign(island.rows.size(), 0.0);
@@ -115,7 +118,9 @@ class IslandMethod final : public StepMethod {
       for (const auto& [joint, first] : joints_) {
         written_.clear();
         joint->write_rows(bodies, h, beta, written_);
-        for (std::size_t k = 0; k < written_.size(); ++k) rows_[static_cast<std::size_t>(first) + k] = written_[k];
+        for (std::size_t k = 0; k < written_.size(); ++k) {
+          rows_[static_cast<std::size_t>(first) + k] = written_[k];
+        }
       }
       for (std::size_t k = 0; k < external_.size(); ++k) {
         RigidBody& body = bodies[static_cast<std::size_t>(island.bodies[k])];
@@ -128,8 +133,9 @@ class IslandMethod final : public StepMethod {
       // a nearly straight bridge, whose dependent pins Lemke cannot resolve: 8× the time).
       unconstrained_velocities(bodies, h, unconstrained_);
       substep_mlcp_.assemble(bodies, rows_, unconstrained_, h);
-      const IslandSolve how = solve_island(substep_mlcp_, all_, problem.settings.step.iterations, work,
-                                           pgs_, local_, problem.settings.step.pitfalls, pivoting);
+      const IslandSolve how =
+          solve_island(substep_mlcp_, all_, problem.settings.step.iterations, work, pgs_, local_,
+                       problem.settings.step.pitfalls, pivoting);
       pivoting = how == IslandSolve::exact;
       // eq. 3-11: F_c = Jᵀ λ, then chapter 2's step over h
       substep_mlcp_.add_constraint_forces(bodies, local_.data());
@@ -140,7 +146,9 @@ class IslandMethod final : public StepMethod {
       }
       for (std::size_t i = 0; i < local_.size(); ++i) mean_[i] += local_[i] / joint_substeps;
     }
-    for (std::size_t i = 0; i < mean_.size(); ++i) lambda[static_cast<std::size_t>(island.rows[i])] = mean_[i];
+    for (std::size_t i = 0; i < mean_.size(); ++i) {
+      lambda[static_cast<std::size_t>(island.rows[i])] = mean_[i];
+    }
   }
 
   IslandList islands_;                   // the step's islands
@@ -151,7 +159,7 @@ class IslandMethod final : public StepMethod {
   std::vector<unsigned char> skip_;      // bodies a substepped island has advanced already
   // a substepped island's:
   std::vector<ConstraintRow> rows_;      // rows
-  std::vector<int> local_of_;            // number among them of each of the step's rows (−1: not its)
+  std::vector<int> local_of_;            // each of the step's rows' number among them (−1: none)
   std::vector<std::pair<const Constraint*, int>> joints_;  // joints and their first rows
   std::vector<Vec6> external_;           // F_ext of its bodies
   std::vector<double> local_, mean_;     // λ of a substep, and the substeps' mean

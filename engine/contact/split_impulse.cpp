@@ -88,7 +88,8 @@ void integrate_with_push_out(std::vector<RigidBody>& bodies, const std::vector<V
   const auto step_run = [&](int t) {
     const auto [first, last] = share_of(bodies.size(), t, runs);
     for (std::size_t i = first; i < last; ++i) {
-      integrate_with_push_out(bodies[i], push_out.empty() ? Vec6::Zero() : push_out[i], dt, pitfalls);
+      integrate_with_push_out(bodies[i], push_out.empty() ? Vec6::Zero() : push_out[i], dt,
+                              pitfalls);
     }
   };
   run_on(workers, step_run);

@@ -70,7 +70,8 @@ int World::add_body(const RigidBody& body, const Shape& shape, const Material& m
 
 int World::add_box(double density, double half_x, double half_y, const Vec3& x, double angle,
                    const Material& material) {
-  return add_body(box_body(density, half_x, half_y, x, angle), Shape::box(half_x, half_y), material);
+  return add_body(box_body(density, half_x, half_y, x, angle), Shape::box(half_x, half_y),
+                  material);
 }
 
 int World::add_static_box(double half_x, double half_y, const Vec3& x, double angle,
@@ -87,8 +88,8 @@ int World::add_joint(std::unique_ptr<Constraint> joint) {
   const std::string name = "joint " + std::to_string(joints_.size());
   const std::array<int, 2> ends = joint->bodies();
   const int count = static_cast<int>(bodies_.size());
-  require(ends[0] < count && ends[1] < count, name + " names a body the world does not have (it has " +
-                                                  std::to_string(count) + ")");
+  require(ends[0] < count && ends[1] < count,
+          name + " names a body the world does not have (it has " + std::to_string(count) + ")");
   // A joint's rows on static bodies alone move nothing: d = J M⁻¹ Jᵀ = 0 (jacobian_rows.h)
   require(holds_block(bodies_, ends[0]) || holds_block(bodies_, ends[1]),
           name + " joins only static bodies (or the world): it can move nothing");
@@ -217,7 +218,9 @@ void World::build_rows() {
   // the joints' rows, λ_exp = last step's λ
   joint_warm_start_.append_guess(rows_.data(), rows_.data() + rows_.size(), lambda_);
   // the pitfall no-warm-start: every λ_exp = 0, the cache's points kept
-  if (settings_.step.pitfalls.has(Pitfall::no_warm_start)) std::fill(lambda_.begin(), lambda_.end(), 0.0);
+  if (settings_.step.pitfalls.has(Pitfall::no_warm_start)) {
+    std::fill(lambda_.begin(), lambda_.end(), 0.0);
+  }
 }
 
 void World::solve(WorldReport* report) {
@@ -263,7 +266,9 @@ void World::take_method_step(WorldReport* report) {
     SweepResult& solution = report->velocity.solution;
     solution.iterations = static_cast<int>(solution.residuals.size());
     // a method that records only its answer (one residual) has that answer as its one pass
-    if (solution.lambdas.size() < solution.residuals.size()) solution.lambdas.assign(1, solution.lambda);
+    if (solution.lambdas.size() < solution.residuals.size()) {
+      solution.lambdas.assign(1, solution.lambda);
+    }
   }
   remember_lambdas(report);
 }
@@ -289,7 +294,8 @@ void World::find_non_finite_body() {
     first_of_run[static_cast<std::size_t>(t)] = i < last ? i : bodies_.size();
   });
   const std::size_t first = *std::min_element(first_of_run.begin(), first_of_run.begin() + runs);
-  first_non_finite_body_ = first < bodies_.size() ? std::optional<std::size_t>(first) : std::nullopt;
+  first_non_finite_body_ =
+      first < bodies_.size() ? std::optional<std::size_t>(first) : std::nullopt;
 }
 
 double mechanical_energy(const World& world) {
@@ -298,7 +304,8 @@ double mechanical_energy(const World& world) {
   for (const RigidBody& b : world.bodies()) {
     if (b.is_static()) continue;
     // eq. 1-47 and m g h
-    energy += kinetic_energy(b.mass, b.v, b.inertia_world(), b.angular_velocity) - b.mass * g.dot(b.x);
+    energy +=
+        kinetic_energy(b.mass, b.v, b.inertia_world(), b.angular_velocity) - b.mass * g.dot(b.x);
   }
   return energy;
 }
