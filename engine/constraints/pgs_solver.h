@@ -82,6 +82,31 @@ void pgs_row(const PackedRow<N>& row, std::size_t i, double* lambda, Block<N>& a
   if (two_bodies) a2 += diff * row.B[1];
 }
 
+// What a pass over one group of rows does: a PGS sweep of its rows, or (on threads, before the
+// first sweep) its rows' terms of a = B λ.
+enum class GroupPass { sweep, transpose };
+
+// One pass over the rows [first, last) of one group, on the same bodies (a pair's contact rows
+// and their friction rows): the group keeps its bodies' a_b in local variables, the same
+// arithmetic as row by row through memory, without a trip through memory per row. Raw
+// pointers: the stores to λ cannot then be taken to move the vectors' buffers.
+template <int N, bool ClampIncrement, GroupPass What>
+void pass_group(const PackedRow<N>* rows, int first, int last, Block<N>* a, double* lambda) {
+  const int b1 = rows[first].map[0];
+  const int b2 = rows[first].map[1];
+  Block<N> a1 = a[b1];
+  Block<N> a2 = b2 >= 0 ? a[b2] : Block<N>::Zero();
+  for (int i = first; i < last; ++i) {
+    if constexpr (What == GroupPass::sweep) {
+      pgs_row<N, ClampIncrement>(rows[i], static_cast<std::size_t>(i), lambda, a1, a2);
+    } else {
+      add_row_term(rows[i], lambda[i], a1, a2);
+    }
+  }
+  a[b1] = a1;
+  if (b2 >= 0) a[b2] = a2;
+}
+
 // PGS's working memory, a = B λ per body, kept from solve to solve so that a World step
 // allocates nothing once its buffers have grown.
 class PgsSolver {
@@ -134,7 +159,7 @@ class PgsSolver {
   template <int N, bool ClampIncrement>
   void sweep(const PackedRows<N>& rows, const std::vector<RowGroup>& groups,
              std::vector<Block<N>>& a_of_body, double* lambda) const;
-  // An MLCP as its lanes sweep it (pgs_solver.cpp).
+  // An MLCP as its lanes sweep it (below); the lanes are pgs_lanes.cpp's.
   template <int N>
   struct Swept;
   template <int N, bool ClampIncrement>
@@ -162,6 +187,22 @@ class PgsSolver {
   std::array<PartPlan, 2> plans_;
   const PartPlan* plan_ = nullptr;
   long plans_made_ = 0;
+};
+
+// An MLCP as a thread's lanes sweep it: its rows, groups, a and λ, the plan of its parts, each
+// part's Progress (nullptr on one thread), the pass its lanes start at (0: a = B λ first) and
+// the sweeps.
+template <int N>
+struct PgsSolver::Swept {
+  const PackedRow<N>* rows = nullptr;
+  const RowGroup* groups = nullptr;
+  long group_count = 0;
+  Block<N>* a = nullptr;
+  double* lambda = nullptr;
+  const PartPlan* plan = nullptr;
+  Progress* progress = nullptr;
+  long first_pass = 1;
+  int sweeps = 0;
 };
 
 // Solves the MLCP from the guess λ_exp (warm start) in a solver of its own; a caller solving
