@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -85,6 +86,35 @@ TEST_SUITE("SolverLab") {
     CHECK(one[0].joint_rows == chained.velocity.mlcp.row_count());
     // a pin's rows are equalities, λ = p − m: two variables each in the exact solve's LCP
     CHECK(one[0].lcp_size == 2 * chained.velocity.mlcp.row_count());
+  }
+
+  TEST_CASE("islands: a pile is one island of every row, its LCP counted just past the limit") {
+    // pyramid:10 after 30 steps: every box rests on others, so its rows are one island holding
+    // rows 0..n−1 and all 55 boxes. Its LCP variables (1 per contact row, 3 per friction row:
+    // hundreds) are counted only until they pass exact_island_limit, which decides the solve
+    // (islands.h): past it by at most one group's rows, a pair's two contact rows and one
+    // friction row, 2 + 3 = 5 variables. The count by hand from the rows must agree.
+    World world = scene_world("pyramid:10", "pgs");
+    for (int k = 0; k < 30; ++k) world.step();
+    const WorldReport report = step_reported(world);
+    const Mlcp& mlcp = report.velocity.mlcp;
+    const std::vector<Island> islands = find_islands(mlcp, mlcp.row_count());
+    REQUIRE(islands.size() == 1);
+    const Island& pile = islands[0];
+    std::vector<int> every(static_cast<std::size_t>(mlcp.row_count()));
+    std::iota(every.begin(), every.end(), 0);
+    CHECK(pile.rows == every);
+    std::vector<int> boxes(55);
+    std::iota(boxes.begin(), boxes.end(), 1);  // body 0 is the static ground
+    CHECK(pile.bodies == boxes);
+    int all_variables = 0;
+    for (int i = 0; i < mlcp.row_count(); ++i) {
+      all_variables += mlcp.row(i).friction_of >= 0 ? 3 : 1;
+    }
+    REQUIRE(all_variables > exact_island_limit + 5);
+    CHECK(pile.lcp_size > exact_island_limit);
+    CHECK(pile.lcp_size <= exact_island_limit + 5);
+    CHECK(pile.joint_rows == 0);
   }
 
   TEST_CASE("exact: each step's λ solves the step's MLCP, and equals pivoting on it") {

@@ -14,11 +14,6 @@
 
 namespace lamina {
 
-// The largest island solved exactly: its LCP's variables (Island::lcp_size). Lemke's pivots cost
-// the square of the variables each and take about as many pivots as variables; 240 is a stack of
-// 30 boxes with friction (two points each, 8 variables a box), about 1.6 ms a step.
-constexpr int exact_island_limit = 240;
-
 // How an island's λ was found.
 enum class IslandSolve { exact, pgs };
 

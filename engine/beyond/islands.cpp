@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
 #include <numeric>
 
@@ -41,9 +42,12 @@ void IslandList::find(const Mlcp& mlcp, std::size_t first_joint_row) {
   const std::size_t group_count = groups.empty() ? 0 : groups.size() - 1;  // the last is the end
   parent_.resize(static_cast<std::size_t>(mlcp.body_count()));
   std::iota(parent_.begin(), parent_.end(), 0);
+  seen_.assign(parent_.size(), 0);  // the bodies some row touches
   for (std::size_t g = 0; g < group_count; ++g) {
     const std::array<int, 2>& b = groups[g].bodies;
+    seen_[static_cast<std::size_t>(b[0])] = 1;
     if (b[1] < 0) continue;
+    seen_[static_cast<std::size_t>(b[1])] = 1;
     const int r0 = root_of(parent_, b[0]);
     const int r1 = root_of(parent_, b[1]);
     // the smaller root stays: the same rows join the same way whatever the order of unions
@@ -51,34 +55,53 @@ void IslandList::find(const Mlcp& mlcp, std::size_t first_joint_row) {
   }
   count_ = 0;
   island_of_root_.assign(parent_.size(), -1);
-  seen_.assign(parent_.size(), 0);
+  island_of_group_.resize(group_count);
+  row_count_.clear();
+  const int joint_from = static_cast<int>(std::min<std::size_t>(first_joint_row, INT_MAX));
   mlcp.visit([&](const auto& rows) {
     for (std::size_t g = 0; g < group_count; ++g) {
-      const std::array<int, 2>& b = groups[g].bodies;
-      const std::size_t root = static_cast<std::size_t>(root_of(parent_, b[0]));
+      const std::size_t root = static_cast<std::size_t>(root_of(parent_, groups[g].bodies[0]));
       if (island_of_root_[root] < 0) {
         island_of_root_[root] = static_cast<int>(count_);
         if (count_ == islands_.size()) islands_.emplace_back();
         Island& fresh = islands_[count_++];
-        fresh.rows.clear();  // memory of an earlier step's island kept
-        fresh.bodies.clear();
+        fresh.bodies.clear();  // memory of an earlier step's island kept
         fresh.joint_rows = 0;
         fresh.lcp_size = 0;
+        row_count_.push_back(0);
       }
-      Island& island = islands_[static_cast<std::size_t>(island_of_root_[root])];
-      for (int i = groups[g].first; i < groups[g + 1].first; ++i) {
-        island.rows.push_back(i);
-        if (static_cast<std::size_t>(i) >= first_joint_row) ++island.joint_rows;
+      const int k = island_of_root_[root];
+      island_of_group_[g] = k;
+      Island& island = islands_[static_cast<std::size_t>(k)];
+      const int first = groups[g].first;
+      const int last = groups[g + 1].first;
+      row_count_[static_cast<std::size_t>(k)] += last - first;
+      island.joint_rows += std::max(0, last - std::max(first, joint_from));
+      if (island.lcp_size > exact_island_limit) continue;  // counted far enough (Island)
+      for (int i = first; i < last; ++i) {
         island.lcp_size += lcp_variables(rows[static_cast<std::size_t>(i)]);
-      }
-      for (const int body : b) {
-        if (body < 0 || seen_[static_cast<std::size_t>(body)]) continue;
-        seen_[static_cast<std::size_t>(body)] = 1;
-        island.bodies.push_back(body);
       }
     }
   });
-  for (std::size_t k = 0; k < count_; ++k) std::sort(islands_[k].bodies.begin(), islands_[k].bodies.end());
+  // each island's rows, ascending: its groups' rows in their order, written in place
+  for (std::size_t k = 0; k < count_; ++k) {
+    islands_[k].rows.resize(static_cast<std::size_t>(row_count_[k]));
+    row_count_[k] = 0;  // now how many are written
+  }
+  for (std::size_t g = 0; g < group_count; ++g) {
+    const std::size_t k = static_cast<std::size_t>(island_of_group_[g]);
+    int* const out = islands_[k].rows.data() + row_count_[k];
+    const int first = groups[g].first;
+    const int last = groups[g + 1].first;
+    for (int i = first; i < last; ++i) out[i - first] = i;
+    row_count_[k] += last - first;
+  }
+  // each island's bodies, ascending: the bodies its rows touch, found by their roots
+  for (std::size_t b = 0; b < seen_.size(); ++b) {
+    if (seen_[b] == 0) continue;
+    const std::size_t root = static_cast<std::size_t>(root_of(parent_, static_cast<int>(b)));
+    islands_[static_cast<std::size_t>(island_of_root_[root])].bodies.push_back(static_cast<int>(b));
+  }
 }
 
 }  // namespace lamina

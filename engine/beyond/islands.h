@@ -17,12 +17,20 @@
 
 namespace lamina {
 
+// The largest island solved exactly: its LCP's variables (Island::lcp_size). Lemke's pivots cost
+// the square of the variables each and take about as many pivots as variables; 240 is a stack of
+// 30 boxes with friction (two points each, 8 variables a box), about 1.6 ms a step.
+constexpr int exact_island_limit = 240;
+
 struct Island {
   std::vector<int> rows;    // its rows, ascending
   std::vector<int> bodies;  // the moving bodies they touch, ascending
   int joint_rows = 0;       // how many of its rows are joints' (at or after first_joint_row)
-  int lcp_size = 0;         // the variables of its exact solve (exact_mlcp.h): 1 per one-sided
-                            // row, 2 per equality row, 3 per friction row
+  // The variables of its exact solve (exact_mlcp.h): 1 per one-sided row, 2 per equality row,
+  // 3 per friction row; counted only while at most exact_island_limit (an island past it is
+  // swept by PGS whatever its size), so that a pile's rows are not all read to count them: past
+  // the limit it stops at the first group of rows that takes it past.
+  int lcp_size = 0;
 };
 
 // The islands of the MLCP's rows, ordered by their first row. Rows from first_joint_row on are
@@ -44,7 +52,9 @@ class IslandList {
   std::size_t count_ = 0;
   std::vector<int> parent_;      // union-find's parent of each body
   std::vector<int> island_of_root_;
-  std::vector<unsigned char> seen_;
+  std::vector<int> island_of_group_;  // each group's island
+  std::vector<int> row_count_;        // each island's rows, counted, then written
+  std::vector<unsigned char> seen_;   // the bodies some row touches
 };
 
 }  // namespace lamina
