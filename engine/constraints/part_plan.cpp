@@ -59,9 +59,14 @@ bool PartPlan::make(const Mlcp& mlcp, int parts) {
       if (body >= 0) last_group[body] = g - group_count;  // in the pass before
     }
   }
-  group_waits_.assign(static_cast<std::size_t>(group_count), GroupWait{});
+  // a wait kept only for a group that waits (few do: a table of every group's was cleared for
+  // every plan, some 230 kB at base 80); room for one a group, so that a plan allocates no
+  // more once the groups have stopped growing
+  wait_index_.assign(static_cast<std::size_t>(group_count), -1);
+  waits_.clear();
+  waits_.reserve(static_cast<std::size_t>(group_count));
   waited_on_.assign(static_cast<std::size_t>(group_count), 0);
-  GroupWait* const group_wait = group_waits_.data();
+  int* const wait_index = wait_index_.data();
   unsigned char* const waited_on = waited_on_.data();
   long waits = 0;
   int part = 0;
@@ -83,7 +88,11 @@ bool PartPlan::make(const Mlcp& mlcp, int parts) {
       const int theirs = part_of(g_before);
       waited_on[g_before] = 1;
       ++waits;
-      GroupWait& wait = group_wait[g];
+      if (wait_index[g] < 0) {
+        wait_index[g] = static_cast<int>(waits_.size());
+        waits_.emplace_back();
+      }
+      GroupWait& wait = waits_[static_cast<std::size_t>(wait_index[g])];
       if (k == 1 && wait.part[0] == theirs) {
         wait.after[0] = std::max(wait.after[0], static_cast<long>(before) + 1);
       } else {
@@ -97,8 +106,7 @@ bool PartPlan::make(const Mlcp& mlcp, int parts) {
   run_end_.resize(static_cast<std::size_t>(group_count));
   int* const run_end = run_end_.data();
   for (int g = group_count - 1; g >= 0; --g) {
-    const bool next_waits = g + 1 < group_count && (group_wait[g + 1].part[0] >= 0 ||
-                                                    group_wait[g + 1].part[1] >= 0);
+    const bool next_waits = g + 1 < group_count && wait_index[g + 1] >= 0;
     const bool stop = waited_on[g] != 0 || next_waits || g + 1 == group_count;
     run_end[g] = stop ? g + 1 : run_end[g + 1];
   }

@@ -37,7 +37,11 @@ class PartPlan {
   int parts() const { return parts_; }  // how many parts it cuts the groups into
   // Part t takes the groups [first_group(t), first_group(t + 1)).
   int first_group(int part) const { return part_first_[static_cast<std::size_t>(part)]; }
-  const GroupWait* waits() const { return group_waits_.data(); }  // per group
+  // Where group g waits, or nullptr when it waits on no other part (most groups do not).
+  const GroupWait* wait_of(int group) const {
+    const int k = wait_index_[static_cast<std::size_t>(group)];
+    return k < 0 ? nullptr : &waits_[static_cast<std::size_t>(k)];
+  }
   // How far a part that may take group g may go on in one run, without looking at a wait: to
   // the group after the first from g on that another part waits for (its part then publishes
   // its progress), or to the first after g that waits itself, whichever comes first. Not cut at
@@ -53,7 +57,8 @@ class PartPlan {
   // the plan
   bool usable_ = false;
   std::vector<int> part_first_;
-  std::vector<GroupWait> group_waits_;    // where group g waits
+  std::vector<int> wait_index_;           // per group, its wait in waits_, or −1: none
+  std::vector<GroupWait> waits_;          // the waits of the groups that wait, in group order
   std::vector<unsigned char> waited_on_;  // another part waits for group g
   std::vector<int> run_end_;              // per group, run_end()
   std::vector<int> last_group_of_body_;   // scratch of make(): the last group met on each body

@@ -104,12 +104,13 @@ template <int N, bool ClampIncrement>
     const Lane& l = lane[static_cast<std::size_t>(u)];
     const Swept<N>& m = *l.m;
     if (l.pass > m.sweeps) return Wait::done;
-    const PartPlan::GroupWait& wait = m.plan->waits()[l.next];
+    const PartPlan::GroupWait* const wait = m.plan->wait_of(l.next);
+    if (wait == nullptr) return Wait::go;
     const Lane& other = lane[static_cast<std::size_t>(u ^ 1)];  // the same MLCP's other lane
     for (int e = 0; e < 2; ++e) {
-      const int v = wait.part[e];
+      const int v = wait->part[e];
       if (v < 0) continue;
-      const long needed = l.pass * m.group_count + wait.after[e];
+      const long needed = l.pass * m.group_count + wait->after[e];
       if (v == other.part) {
         if (other.passed < needed) return Wait::own_lane;
       } else {
