@@ -105,10 +105,11 @@ bool PartPlan::make(const Mlcp& mlcp, int parts) {
   // or g + 1 waits itself, else where the run from g + 1 ends
   run_end_.resize(static_cast<std::size_t>(group_count));
   int* const run_end = run_end_.data();
+  int end = group_count;  // where the run from the group after g ends
   for (int g = group_count - 1; g >= 0; --g) {
     const bool next_waits = g + 1 < group_count && wait_index[g + 1] >= 0;
-    const bool stop = waited_on[g] != 0 || next_waits || g + 1 == group_count;
-    run_end[g] = stop ? g + 1 : run_end[g + 1];
+    if (waited_on[g] != 0 || next_waits) end = g + 1;
+    run_end[g] = end;
   }
   // rows whose bodies are spread over the whole order (bodies added in no spatial order) would
   // make the parts wait at every few groups: then one part is faster
