@@ -58,14 +58,16 @@ void PgsSolver::use_workers(Workers* workers) {
 
 bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {
   if (mlcp.row_count() < threaded_min_rows || !mlcp.friction_on_own_bodies()) return false;
-  // a plan kept for the MLCPs solved before, if one serves (a step's position MLCP is served by
-  // its velocity MLCP's plan), else a new one in place of the older
-  for (PartPlan& plan : plans_) {
-    if (!plan.serves(mlcp, parts)) continue;
-    plan_ = &plan;
-    return plan.usable();
+  // a plan kept for the MLCPs solved before, if one serves, the last used first (a step's
+  // position MLCP is served by its velocity MLCP's plan, just made or used), else a new one in
+  // place of the older
+  PartPlan& last = plan_ == &plans_[1] ? plans_[1] : plans_[0];
+  PartPlan& older = &last == &plans_[0] ? plans_[1] : plans_[0];
+  for (PartPlan* plan : {&last, &older}) {
+    if (!plan->serves(mlcp, parts)) continue;
+    plan_ = plan;
+    return plan->usable();
   }
-  PartPlan& older = plan_ == &plans_[0] ? plans_[1] : plans_[0];
   plan_ = &older;
   ++plans_made_;
   return older.make(mlcp, parts);
