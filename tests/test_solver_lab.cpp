@@ -117,6 +117,34 @@ TEST_SUITE("SolverLab") {
     CHECK(pile.joint_rows == 0);
   }
 
+  TEST_CASE("islands: rows joined through a union-find tree two deep are one island") {
+    // Rows on bodies (1,5), (2,6), (3,5), (3,6), (4,0) in that order: union-find makes 5 → 1,
+    // 6 → 2, then 3 → 1 and (through 3 and 6) 2 → 1, leaving body 6 two links from its root 1.
+    // By hand: bodies 1, 2, 3, 5, 6 are one island of rows 0–3; row 4 is an island of bodies
+    // 0 and 4. Each body's island must be read from its root, not its parent.
+    std::vector<RigidBody> bodies;
+    for (int b = 0; b < 7; ++b) {
+      bodies.push_back(RigidBody::dynamic_body(1.0, Mat3::Identity(), Vec3(b, 0.0, 0.0)));
+    }
+    std::vector<ConstraintRow> rows;
+    for (const auto& [a, b] : std::vector<std::pair<int, int>>{{1, 5}, {2, 6}, {3, 5}, {3, 6},
+                                                              {4, 0}}) {
+      ConstraintRow row;  // J V = v_a,x − v_b,x (a one-sided row)
+      row.Jsp = {Vec6::Unit(0), -Vec6::Unit(0)};
+      row.Jmap = {a, b};
+      row.lambda_min = 0.0;
+      rows.push_back(row);
+    }
+    const Mlcp mlcp = assemble_mlcp(bodies, rows, 1.0 / 60.0);
+    const std::vector<Island> islands = find_islands(mlcp, mlcp.row_count());
+    REQUIRE(islands.size() == 2);
+    CHECK(islands[0].rows == std::vector<int>{0, 1, 2, 3});
+    CHECK(islands[0].bodies == std::vector<int>{1, 2, 3, 5, 6});
+    CHECK(islands[0].lcp_size == 4);
+    CHECK(islands[1].rows == std::vector<int>{4});
+    CHECK(islands[1].bodies == std::vector<int>{0, 4});
+  }
+
   TEST_CASE("exact: each step's λ solves the step's MLCP, and equals pivoting on it") {
     // heavy-on-light:1000 and a 5-box stack: small islands, solved by Lemke with friction. The
     // λ the step keeps must be what solve_mlcp_exactly gives for the MLCP the step assembled

@@ -53,6 +53,11 @@ void IslandList::find(const Mlcp& mlcp, std::size_t first_joint_row) {
     // the smaller root stays: the same rows join the same way whatever the order of unions
     if (r0 != r1) parent_[static_cast<std::size_t>(std::max(r0, r1))] = std::min(r0, r1);
   }
+  // every body's root at once: a root is the smallest body of its tree, so each body's parent
+  // is below it, and in ascending order its parent's root is known when the body is reached
+  for (std::size_t b = 0; b < parent_.size(); ++b) {
+    parent_[b] = parent_[static_cast<std::size_t>(parent_[b])];
+  }
   count_ = 0;
   island_of_root_.assign(parent_.size(), -1);
   island_of_group_.resize(group_count);
@@ -60,7 +65,8 @@ void IslandList::find(const Mlcp& mlcp, std::size_t first_joint_row) {
   const int joint_from = static_cast<int>(std::min<std::size_t>(first_joint_row, INT_MAX));
   mlcp.visit([&](const auto& rows) {
     for (std::size_t g = 0; g < group_count; ++g) {
-      const std::size_t root = static_cast<std::size_t>(root_of(parent_, groups[g].bodies[0]));
+      const std::size_t root =
+          static_cast<std::size_t>(parent_[static_cast<std::size_t>(groups[g].bodies[0])]);
       if (island_of_root_[root] < 0) {
         island_of_root_[root] = static_cast<int>(count_);
         if (count_ == islands_.size()) islands_.emplace_back();
@@ -88,18 +94,23 @@ void IslandList::find(const Mlcp& mlcp, std::size_t first_joint_row) {
     islands_[k].rows.resize(static_cast<std::size_t>(row_count_[k]));
     row_count_[k] = 0;  // now how many are written
   }
-  for (std::size_t g = 0; g < group_count; ++g) {
-    const std::size_t k = static_cast<std::size_t>(island_of_group_[g]);
-    int* const out = islands_[k].rows.data() + row_count_[k];
+  for (std::size_t g = 0; g < group_count;) {
+    // the run of groups from g in the same island (a pile's: all of them), its rows at once
+    const int k = island_of_group_[g];
+    std::size_t end = g + 1;
+    while (end < group_count && island_of_group_[end] == k) ++end;
     const int first = groups[g].first;
-    const int last = groups[g + 1].first;
-    for (int i = first; i < last; ++i) out[i - first] = i;
-    row_count_[k] += last - first;
+    const int last = groups[end].first;
+    int* const out =
+        islands_[static_cast<std::size_t>(k)].rows.data() + row_count_[static_cast<std::size_t>(k)];
+    std::iota(out, out + (last - first), first);
+    row_count_[static_cast<std::size_t>(k)] += last - first;
+    g = end;
   }
   // each island's bodies, ascending: the bodies its rows touch, found by their roots
   for (std::size_t b = 0; b < seen_.size(); ++b) {
     if (seen_[b] == 0) continue;
-    const std::size_t root = static_cast<std::size_t>(root_of(parent_, static_cast<int>(b)));
+    const std::size_t root = static_cast<std::size_t>(parent_[b]);
     islands_[static_cast<std::size_t>(island_of_root_[root])].bodies.push_back(static_cast<int>(b));
   }
 }
