@@ -83,20 +83,9 @@ void finish_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
   // eq. 3-11, 5-9: F_c = Jᵀ λ (nothing on a skipped body: its rows' λ are zero here); with
   // workers, each thread adds to and steps its own runs of the bodies, as the World's step does
   problem.velocity.add_constraint_forces(bodies, lambda.data(), problem.workers);
-  const std::vector<Vec6>& push = split.push_out();
-  const int runs = runs_on(problem.workers);
-  run_on(problem.workers, [&](int t) {
-    const auto [first, last] = share_of(bodies.size(), t, runs);
-    for (std::size_t b = first; b < last; ++b) {
-      if (!skip.empty() && skip[b]) {
-        bodies[b].clear_forces();  // advanced already: its F_c was taken in its own steps
-        continue;
-      }
-      // eq. 2-1..2-8 under F_ext + F_c, with the push-out
-      integrate_with_push_out(bodies[b], push.empty() ? Vec6::Zero() : push[b], s.step.dt,
-                              s.step.pitfalls);
-    }
-  });
+  // eq. 2-1..2-8 under F_ext + F_c, with the push-out
+  integrate_with_push_out(bodies, split.push_out(), s.step.dt, s.step.pitfalls, problem.workers,
+                          skip);
 }
 
 }  // namespace lamina

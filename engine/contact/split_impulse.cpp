@@ -83,11 +83,16 @@ void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt, Pitfa
 }
 
 void integrate_with_push_out(std::vector<RigidBody>& bodies, const std::vector<Vec6>& push_out,
-                             double dt, Pitfalls pitfalls, Workers* workers) {
+                             double dt, Pitfalls pitfalls, Workers* workers,
+                             const std::vector<unsigned char>& skip) {
   const int runs = runs_on(workers);
   const auto step_run = [&](int t) {
     const auto [first, last] = share_of(bodies.size(), t, runs);
     for (std::size_t i = first; i < last; ++i) {
+      if (!skip.empty() && skip[i] != 0) {
+        bodies[i].clear_forces();  // advanced already: its F_c was taken in its own steps
+        continue;
+      }
       integrate_with_push_out(bodies[i], push_out.empty() ? Vec6::Zero() : push_out[i], dt,
                               pitfalls);
     }

@@ -59,9 +59,11 @@ class SplitImpulse {
 // Chapter 2's step (eq. 2-1..2-8) for every dynamic body under its accumulated forces, with the
 // push-out velocity (empty: none) lent for the position update and then taken back; every
 // body's forces are cleared. The pitfalls go to chapter 2's step. With `workers`, each thread
-// steps a run of the bodies (each body's step is its own).
+// steps a run of the bodies (each body's step is its own). A body whose `skip` entry is not 0
+// (skip empty: none; a body a chapter-6 method has advanced itself) only has its forces cleared.
 void integrate_with_push_out(std::vector<RigidBody>& bodies, const std::vector<Vec6>& push_out,
-                             double dt, Pitfalls pitfalls = {}, Workers* workers = nullptr);
+                             double dt, Pitfalls pitfalls = {}, Workers* workers = nullptr,
+                             const std::vector<unsigned char>& skip = {});
 // The same for one body with its push-out `push` ([v; ω], zero for none).
 void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt, Pitfalls pitfalls = {});
 
