@@ -101,9 +101,84 @@ SideBySide solved_side_by_side(int threads, const StepReport& velocity,
   return out;
 }
 
+// Every body's force and torque, all six components each, as bytes.
+std::vector<unsigned char> wrenches_of(const std::vector<RigidBody>& bodies) {
+  std::vector<double> values;
+  for (const RigidBody& body : bodies) {
+    values.insert(values.end(), body.force.data(), body.force.data() + 3);
+    values.insert(values.end(), body.torque.data(), body.torque.data() + 3);
+  }
+  return bytes_of(values.data(), values.size());
+}
+
 }  // namespace
 
 TEST_SUITE("PGS on threads") {
+  TEST_CASE("F_c = Jᵀ λ added in PGS's last sweep is Mlcp::add_constraint_forces's, bit for bit") {
+    // With `forces_to`, sweeps in parts add each group's terms of F_c once its λ are final
+    // (pgs_solver.h). Every body's force and torque must be what solving first and then adding
+    // F_c row by row gives — the same additions in the same order, so the same bits, not close
+    // ones — in two lanes, on 2 and 3 threads, side by side with the position MLCP (the first
+    // MLCP's F_c alone), and where the sweeps do not run in parts (recorded: added after them).
+    // The forces start from values with bits below gravity's, so that a sum taken in another
+    // order, a term added twice or one left out shows; the out-of-plane components stay 0.
+    const WorldReport report = pyramid_report(60);
+    const StepReport& velocity = report.velocity;
+    REQUIRE(velocity.mlcp.row_count() >= 1000);
+    std::vector<RigidBody> start = report.bodies;
+    for (std::size_t b = 0; b < start.size(); ++b) {
+      start[b].force = Vec3(0.013 * static_cast<double>(b), -9.8 * start[b].mass + 1e-3, 0.0);
+      start[b].torque = Vec3(0.0, 0.0, 0.007 * static_cast<double>(b) - 0.5);
+    }
+    for (const int sweeps : {1, 8}) {
+      CAPTURE(sweeps);
+      std::vector<double> lambda(velocity.lambda_exp.data(),
+                                 velocity.lambda_exp.data() + velocity.lambda_exp.size());
+      SweepResult recorded;
+      PgsSolver row_by_row;
+      row_by_row.solve(velocity.mlcp, lambda.data(), {sweeps, 0.0, true}, recorded);
+      std::vector<RigidBody> expected = start;
+      velocity.mlcp.add_constraint_forces(expected, lambda.data());
+      const std::vector<unsigned char> expected_lambda = bytes_of(lambda.data(), lambda.size());
+      const std::vector<unsigned char> expected_wrenches = wrenches_of(expected);
+      REQUIRE(expected_wrenches != wrenches_of(start));
+      for (const int threads : {0, 2, 3}) {
+        for (const bool both : {false, true}) {
+          for (const bool record : {false, true}) {
+            CAPTURE(threads);
+            CAPTURE(both);
+            CAPTURE(record);
+            std::unique_ptr<Workers> workers(threads > 0 ? new Workers(threads) : nullptr);
+            PgsSolver solver;
+            solver.use_workers(workers.get());
+            std::vector<RigidBody> bodies = start;
+            std::vector<double> l(velocity.lambda_exp.data(),
+                                  velocity.lambda_exp.data() + velocity.lambda_exp.size());
+            std::vector<double> p(static_cast<std::size_t>(report.position.mlcp.row_count()));
+            SweepResult result;
+            SweepResult position_result;
+            if (both) {
+              solver.solve_both(velocity.mlcp, l.data(), {sweeps, 0.0, record}, result,
+                                report.position.mlcp, p.data(), {3, 0.0, false}, position_result,
+                                {}, &bodies);
+            } else {
+              solver.solve(velocity.mlcp, l.data(), {sweeps, 0.0, record}, result, {}, &bodies);
+            }
+            CHECK(bytes_of(l.data(), l.size()) == expected_lambda);
+            CHECK(wrenches_of(bodies) == expected_wrenches);
+            // the last sweep did add them where the sweeps ran in parts: the check can fail
+            if (both) {
+              CHECK(solver.swept_side_by_side() == (!record && sweeps > 1));
+            } else {
+              CHECK((solver.swept_on_threads() || solver.swept_in_lanes()) ==
+                    (!record && (threads > 0 || sweeps > 1)));
+            }
+          }
+        }
+      }
+    }
+  }
+
   TEST_CASE("two MLCPs solved side by side give each one's λ, and B λ, bit for bit") {
     // solve_both sweeps a step's velocity and position MLCPs at once (pgs_solver.h), each in
     // its own rows' order: both λ must be those of two solves one after the other on one

@@ -145,6 +145,7 @@ class Mlcp {
 
   // F_c = Jᵀ λ (eq. 3-11) added to each body's accumulated force and torque. With `workers`,
   // each of their threads adds to a run of the bodies (each body's sum in row order all the same).
+  // PGS can add it in its last sweep instead (PgsSolver::solve's `forces_to`), the same sums.
   void add_constraint_forces(std::vector<RigidBody>& bodies, const double* lambda,
                              Workers* workers = nullptr) const;
   // Body b's share of F_c = Jᵀ λ, [f_c; τ_c] about its centre, in N and N·m (eq. 3-11, 5-9).
@@ -193,6 +194,47 @@ class Mlcp {
   std::vector<unsigned char> friction_own_in_run_;
   std::vector<unsigned char> planar_in_run_;  // scratch of assemble
 };
+
+// Body b's accumulated force and torque in the layout of N: [f; τ], or [f_x f_y τ_z] in the plane.
+template <int N>
+Block<N> wrench_block(const RigidBody& body) {
+  if constexpr (N == 3) {
+    return Block<3>(body.force.x(), body.force.y(), body.torque.z());
+  } else {
+    Block<6> w;
+    w << body.force, body.torque;
+    return w;
+  }
+}
+// The same written back (in the plane, the other three components left as they are).
+template <int N>
+void set_wrench_block(RigidBody& body, const Block<N>& w) {
+  if constexpr (N == 3) {
+    body.force.x() = w[0];
+    body.force.y() = w[1];
+    body.torque.z() = w[2];
+  } else {
+    body.force = w.template head<3>();
+    body.torque = w.template tail<3>();
+  }
+}
+
+// The terms of F_c = Jᵀ λ (eq. 3-11) of rows [first, last) of one group (Mlcp::groups: rows on
+// the same bodies) added to its bodies' forces and torques, to each body whose `to` entry is
+// set: row by row in row order, each body's sum held over the group instead of stored after
+// every row (the same additions in the same order: the same bits).
+template <int N>
+void add_group_forces(const PackedRow<N>* rows, const double* lambda, int first, int last,
+                      RigidBody* bodies, std::array<bool, 2> to = {true, true}) {
+  const std::array<int, 2> map = rows[first].map;
+  to[1] = to[1] && map[1] >= 0;
+  // (a body not to be added to sums from zero, and is left alone)
+  Block<N> f1 = to[0] ? wrench_block<N>(bodies[map[0]]) : Block<N>::Zero();
+  Block<N> f2 = to[1] ? wrench_block<N>(bodies[map[1]]) : Block<N>::Zero();
+  for (int i = first; i < last; ++i) add_force_term(rows[i], lambda[i], f1, f2);
+  if (to[0]) set_wrench_block<N>(bodies[map[0]], f1);
+  if (to[1]) set_wrench_block<N>(bodies[map[1]], f2);
+}
 
 // The MLCP of the rows for the bodies' velocities and accumulated forces now (eq. 3-16).
 Mlcp assemble_mlcp(const std::vector<RigidBody>& bodies, const std::vector<ConstraintRow>& rows,

@@ -114,67 +114,52 @@ double Mlcp::row_times(int i, const std::vector<Vec6>& per_body) const {
                       row.two_bodies());
   });
 }
-namespace {
-
-// Adds λ J_b to body b's force and torque: all six components, or v_x, v_y, ω_z in the plane.
-void add_wrench(RigidBody& body, double lambda, const Block<6>& J) {
-  body.force += lambda * J.head<3>();
-  body.torque += lambda * J.tail<3>();
-}
-void add_wrench(RigidBody& body, double lambda, const Block<3>& J) {
-  body.force.x() += lambda * J[0];
-  body.force.y() += lambda * J[1];
-  body.torque.z() += lambda * J[2];
-}
-
-}  // namespace
 
 void Mlcp::add_constraint_forces(std::vector<RigidBody>& bodies, const double* lambda,
                                  Workers* workers) const {
   const int runs = runs_on(workers);
-  if (runs == 1) {
-    visit([&](const auto& rows) {
-      // eq. 3-11: F_c = Jᵀ λ
-      for_each_force(rows, lambda, [&](int body, double l, const auto& J) {
-        add_wrench(bodies[body], l, J);
-      });
-    });
-    return;
-  }
   // Each thread adds to the bodies of its two runs only (the shares it integrates), taking the
   // groups that touch them in row order: every body's sum in the one-thread order. One walk of
-  // the groups a thread, not one a run.
-  workers->run([&](int t) {
+  // the groups a thread, not one a run. On one thread, all the bodies.
+  const auto add_own = [&](int t) {
     const std::array<int, 2> own_runs = runs_of_thread(t, runs);
     const std::array<std::pair<std::size_t, std::size_t>, 2> shares{
         share_of(bodies.size(), own_runs[0], runs), share_of(bodies.size(), own_runs[1], runs)};
     const auto own = [&](int body) {
       const auto at = static_cast<std::size_t>(body);
-      return body >= 0 && ((at >= shares[0].first && at < shares[0].second) ||
-                           (at >= shares[1].first && at < shares[1].second));
+      return runs == 1 || (body >= 0 && ((at >= shares[0].first && at < shares[0].second) ||
+                                         (at >= shares[1].first && at < shares[1].second)));
     };
     visit([&](const auto& rows) {
       for (std::size_t g = 0; g + 1 < groups_.size(); ++g) {
-        const std::array<int, 2> pair = groups_[g].bodies;
-        if (!own(pair[0]) && !own(pair[1])) continue;
+        const std::array<bool, 2> to{own(groups_[g].bodies[0]), own(groups_[g].bodies[1])};
+        if (!to[0] && !to[1]) continue;
         // eq. 3-11: F_c = Jᵀ λ, this thread's blocks of it
-        for_each_force(rows, lambda, groups_[g].first, groups_[g + 1].first,
-                       [&](int body, double l, const auto& J) {
-                         if (own(body)) add_wrench(bodies[body], l, J);
-                       });
+        add_group_forces(rows.data(), lambda, groups_[g].first, groups_[g + 1].first,
+                         bodies.data(), to);
       }
     });
-  });
+  };
+  if (runs == 1) {
+    add_own(0);
+  } else {
+    workers->run(add_own);
+  }
 }
-
 
 Vec6 Mlcp::constraint_wrench(int body, const double* lambda) const {
   Vec6 wrench = Vec6::Zero();
   visit([&](const auto& rows) {
-    // eq. 3-11, 5-9: body b's block of F_c = Jᵀ λ
-    for_each_force(rows, lambda, [&](int b, double l, const auto& J) {
-      if (b == body) wrench += l * widen(J);
-    });
+    // eq. 3-11, 5-9: body b's block of F_c = Jᵀ λ, the terms of its rows in row order
+    using Row = typename std::decay_t<decltype(rows)>::value_type;
+    for (int i = 0; i < row_count(); ++i) {
+      const Row& row = rows[static_cast<std::size_t>(i)];
+      if (row.map[0] != body && row.map[1] != body) continue;
+      Block<Row::size> f1 = Block<Row::size>::Zero();
+      Block<Row::size> f2 = Block<Row::size>::Zero();
+      add_force_term(row, lambda[i], f1, f2);
+      wrench += widen(row.map[0] == body ? f1 : f2);
+    }
   });
   return wrench;
 }

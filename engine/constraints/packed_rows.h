@@ -8,7 +8,7 @@
 //                                       writes λ[b1], λ[b2], indexing λ by body)
 //   J_i · X        row_dot             (the text's Multiply, guarding Jmap[1] = −1, which the
 //                                       text's PGS loop does not; docs/the-text.md, chapter 3)
-//   F_c = Jᵀ λ     for_each_force      (eq. 3-11)
+//   F_c = Jᵀ λ     add_force_term      (eq. 3-11)
 // Mlcp (mlcp.h) assembles and views the rows; PgsSolver (pgs_solver.h) sweeps them.
 #pragma once
 
@@ -97,23 +97,13 @@ void transpose_multiply(const PackedRows<N>& rows, int body_count, const double*
   }
 }
 
-// F_c = Jᵀ λ (eq. 3-11), rows [first, last) one by one: add(body, λ_i, J_i's block of that
-// body) for each block, in row order, so every sum of the forces on a body is taken in the same
-// order whether the rows are walked in one piece or group by group.
-template <int N, class Add>
-void for_each_force(const PackedRows<N>& rows, const double* lambda, std::size_t first,
-                    std::size_t last, Add&& add) {
-  for (std::size_t i = first; i < last; ++i) {
-    const PackedRow<N>& row = rows[i];
-    add(row.map[0], lambda[i], row.J[0]);
-    if (row.two_bodies()) add(row.map[1], lambda[i], row.J[1]);
-  }
-}
-
-// F_c = Jᵀ λ over all the rows.
-template <int N, class Add>
-void for_each_force(const PackedRows<N>& rows, const double* lambda, Add&& add) {
-  for_each_force(rows, lambda, 0, rows.size(), add);
+// Row i's term of F_c = Jᵀ λ (eq. 3-11): f_b += λ_i J_i's block, for each of its bodies (f2
+// unused for a one-body row). Every sum of the forces on a body adds its rows' terms in row
+// order (Mlcp::add_constraint_forces, add_group_forces in mlcp.h).
+template <int N>
+void add_force_term(const PackedRow<N>& row, double lambda_i, Block<N>& f1, Block<N>& f2) {
+  f1 += lambda_i * row.J[0];
+  if (row.two_bodies()) f2 += lambda_i * row.J[1];
 }
 
 }  // namespace lamina

@@ -129,6 +129,19 @@ template <int N, bool ClampIncrement>
     const Lane& l = lane[static_cast<std::size_t>(u)];
     return std::min(l.m->plan->run_end(l.next), l.end) - l.next;
   };
+  // In its MLCP's last sweep, when the MLCP adds F_c = Jᵀ λ (Swept::forces_to), the terms of
+  // lane u's next n groups, just swept (their λ final, their rows at hand): before the lane's
+  // count of groups passed moves on, so that a group after them on their bodies, which waits
+  // for that count, comes after them in each body's sum as it does in a_b's.
+  const auto add_forces = [&](int u, int n) {
+    const Lane& l = lane[static_cast<std::size_t>(u)];
+    const Swept<N>& m = *l.m;
+    if (m.forces_to == nullptr || l.pass != m.sweeps) return;
+    for (int g = l.next; g < l.next + n; ++g) {
+      // eq. 3-11
+      add_group_forces(m.rows, m.lambda, m.groups[g].first, m.groups[g + 1].first, m.forces_to);
+    }
+  };
   const auto take = [&](int u, int n) {  // lane u's next n groups, alone
     const Lane& l = lane[static_cast<std::size_t>(u)];
     const Swept<N>& m = *l.m;
@@ -141,6 +154,7 @@ template <int N, bool ClampIncrement>
                                                    m.groups[g + 1].first, m.a, m.lambda);
       }
     }
+    add_forces(u, n);
   };
   const auto advance = [&](int u, int n) {  // lane u has passed its next n groups
     Lane& l = lane[static_cast<std::size_t>(u)];
@@ -184,6 +198,8 @@ template <int N, bool ClampIncrement>
           pass_two_groups<N, ClampIncrement>(*l0.m, l0.next + k, *l1.m, l1.next + k);
         }
       }
+      add_forces(go[0], n);
+      add_forces(go[1], n);
       advance(go[0], n);
       advance(go[1], n);
     } else if (found > 0) {

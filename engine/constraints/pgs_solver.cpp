@@ -114,7 +114,7 @@ void PgsSolver::solve_on_threads(Swept<N>* swept, int count) {
 }
 
 void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& settings,
-                      SweepResult& result, Pitfalls pitfalls) {
+                      SweepResult& result, Pitfalls pitfalls, std::vector<RigidBody>* forces_to) {
   const bool measure = settings.record_sweeps || settings.tolerance > 0.0;
   const bool plain = measure || pitfalls.has(Pitfall::lambda_b1);
   const bool threaded = workers_ != nullptr && !plain && plan_parts(mlcp, runs_on(workers_));
@@ -122,6 +122,11 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
   const bool clamp_increment = pitfalls.has(Pitfall::clamp_increment);
   swept_on_threads_ = threaded;
   swept_in_lanes_ = in_lanes;
+  // F_c in the last sweep of the parts (a solve of no sweep adds it after)
+  RigidBody* const forces_in_sweep =
+      (threaded || in_lanes) && forces_to != nullptr && settings.iterations >= 1
+          ? forces_to->data()
+          : nullptr;
   mlcp.visit([&](const auto& rows) {
     constexpr int N = std::decay_t<decltype(rows)>::value_type::size;
     planar_ = N == 3;
@@ -129,6 +134,7 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
     if (threaded) {
       a_of_body.assign(static_cast<std::size_t>(mlcp.body_count()), Block<N>::Zero());
       Swept<N> m = swept(mlcp, rows, a_of_body, lambda, settings.iterations, 0);
+      m.forces_to = forces_in_sweep;
       if (clamp_increment) {
         solve_on_threads<N, true>(&m, 1);
       } else {
@@ -146,7 +152,8 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
       transpose_multiply(rows, mlcp.body_count(), lambda, a_of_body);
     }
     if (in_lanes) {
-      const Swept<N> m = swept(mlcp, rows, a_of_body, lambda, settings.iterations, 0);
+      Swept<N> m = swept(mlcp, rows, a_of_body, lambda, settings.iterations, 0);
+      m.forces_to = forces_in_sweep;
       if (clamp_increment) {
         sweep_in_lanes<N, true>(&m, 1, 0);
       } else {
@@ -171,13 +178,17 @@ void PgsSolver::solve(const Mlcp& mlcp, double* lambda, const SweepSettings& set
       if (settings.tolerance > 0.0 && r <= settings.tolerance) break;
     }
   });
+  // eq. 3-11: F_c = Jᵀ λ, where the sweeps did not add it
+  if (forces_to != nullptr && forces_in_sweep == nullptr) {
+    mlcp.add_constraint_forces(*forces_to, lambda, workers_);
+  }
 }
 
 void PgsSolver::solve_both(const Mlcp& first, double* first_lambda,
                            const SweepSettings& first_settings, SweepResult& first_result,
                            const Mlcp& second, double* second_lambda,
                            const SweepSettings& second_settings, SweepResult& second_result,
-                           Pitfalls pitfalls) {
+                           Pitfalls pitfalls, std::vector<RigidBody>* forces_to) {
   const auto plain = [&](const SweepSettings& settings) {
     return settings.record_sweeps || settings.tolerance > 0.0 || settings.iterations < 2;
   };
@@ -207,6 +218,7 @@ void PgsSolver::solve_both(const Mlcp& first, double* first_lambda,
         m[1] = swept(second, second_rows, second_a, second_lambda, second_settings.iterations, 1);
         plan_ = first_plan;
         m[0] = swept(first, first_rows, first_a, first_lambda, first_settings.iterations, 0);
+        m[0].forces_to = forces_to != nullptr ? forces_to->data() : nullptr;  // ≥ 2 sweeps
         if (workers_ != nullptr) {
           if (clamp_increment) {
             solve_on_threads<N, true>(m.data(), 2);
@@ -235,7 +247,7 @@ void PgsSolver::solve_both(const Mlcp& first, double* first_lambda,
     });
   });
   if (!swept_side_by_side_) {
-    solve(first, first_lambda, first_settings, first_result, pitfalls);
+    solve(first, first_lambda, first_settings, first_result, pitfalls, forces_to);
     solve(second, second_lambda, second_settings, second_result, pitfalls);
     return;
   }

@@ -117,16 +117,20 @@ class PgsSolver {
   // so λ is the same bit for bit with or without it. result.iterations, result.residuals and
   // result.lambdas are filled; result.lambda is left alone.
   // Of the pitfalls (motion/pitfalls.h), lambda-b1 and clamp-increment are read here.
+  // With `forces_to`, F_c = Jᵀ λ (eq. 3-11) of the λ solved is then added to those bodies'
+  // forces and torques, the sums of Mlcp::add_constraint_forces bit for bit: where the sweeps
+  // run in parts, in the last sweep, each group's terms as soon as its λ are final (its rows
+  // still at hand, not read again in a pass of their own); else after the sweeps.
   void solve(const Mlcp& mlcp, double* lambda, const SweepSettings& settings, SweepResult& result,
-             Pitfalls pitfalls = {});
+             Pitfalls pitfalls = {}, std::vector<RigidBody>* forces_to = nullptr);
   // solve(first, …) and then solve(second, …), the same λ of each bit for bit, for two MLCPs on
   // the same bodies whose λ are independent: side by side (above) when both would be swept in
   // parts (on threads, or in two lanes) and neither is measured; else one after the other.
-  // velocity_change() is then the second's.
+  // velocity_change() is then the second's; `forces_to` takes the first's F_c, as solve's does.
   void solve_both(const Mlcp& first, double* first_lambda, const SweepSettings& first_settings,
                   SweepResult& first_result, const Mlcp& second, double* second_lambda,
                   const SweepSettings& second_settings, SweepResult& second_result,
-                  Pitfalls pitfalls = {});
+                  Pitfalls pitfalls = {}, std::vector<RigidBody>* forces_to = nullptr);
 
   // (B λ)_b after the last sweep of the last solve: body b's velocity change per Δt from the
   // rows, [v; ω].
@@ -203,6 +207,7 @@ struct PgsSolver::Swept {
   Progress* progress = nullptr;
   long first_pass = 1;
   int sweeps = 0;
+  RigidBody* forces_to = nullptr;  // bodies given F_c = Jᵀ λ in the last sweep, or nullptr
 };
 
 // Solves the MLCP from the guess λ_exp (warm start) in a solver of its own; a caller solving

@@ -23,10 +23,10 @@ bool nothing_to_push(const std::vector<double>& zeta) {
 }  // namespace
 
 void solve_recording(PgsSolver& pgs, const Mlcp& mlcp, int iterations, std::vector<double>& lambda,
-                     StepReport* into, Pitfalls pitfalls) {
+                     StepReport* into, Pitfalls pitfalls, std::vector<RigidBody>* forces_to) {
   if (into != nullptr) into->lambda_exp = copy_of(lambda);
   SweepResult sweeps;  // the sweeps run and their residuals; λ itself stays in `lambda`
-  pgs.solve(mlcp, lambda.data(), {iterations, 0.0, into != nullptr}, sweeps, pitfalls);
+  pgs.solve(mlcp, lambda.data(), {iterations, 0.0, into != nullptr}, sweeps, pitfalls, forces_to);
   if (into == nullptr) return;
   into->mlcp = mlcp;
   sweeps.lambda = copy_of(lambda);

@@ -68,8 +68,10 @@ void integrate_with_push_out(std::vector<RigidBody>& bodies, const std::vector<V
 void integrate_with_push_out(RigidBody& body, const Vec6& push, double dt, Pitfalls pitfalls = {});
 
 // PGS on λ in place, λ_exp on entry; with a report (`into`), also records the MLCP as solved,
-// λ_exp, the residual after every sweep and λ.
+// λ_exp, the residual after every sweep and λ. With `forces_to`, F_c = Jᵀ λ is added to those
+// bodies (PgsSolver::solve).
 void solve_recording(PgsSolver& pgs, const Mlcp& mlcp, int iterations, std::vector<double>& lambda,
-                     StepReport* into, Pitfalls pitfalls = {});
+                     StepReport* into, Pitfalls pitfalls = {},
+                     std::vector<RigidBody>* forces_to = nullptr);
 
 }  // namespace lamina

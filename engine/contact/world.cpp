@@ -131,9 +131,7 @@ void World::advance(WorldReport* report) {
   if (method_) {
     take_method_step(report);  // 5–7, chapter 6's way
   } else {
-    solve(report);             // 5
-    // 6. eq. 3-11, 5-9: F_c = Jᵀ λ
-    velocity_.add_constraint_forces(bodies_, lambda_.data(), workers_.get());
+    solve(report);             // 5, and 6. eq. 3-11, 5-9: F_c = Jᵀ λ
     // 7. eq. 2-1..2-8 under F_ext + F_c, with split impulse's push-out
     integrate_with_push_out(bodies_, split_impulse_.push_out(), settings_.step.dt,
                             settings_.step.pitfalls, workers_.get());
@@ -235,10 +233,11 @@ void World::solve(WorldReport* report) {
     SweepResult position_sweeps;
     pgs_.solve_both(velocity_, lambda_.data(), {settings_.step.iterations, 0.0, false},
                     velocity_sweeps, split_impulse_.position(), split_impulse_.lambda().data(),
-                    {settings_.position_iterations, 0.0, false}, position_sweeps, pitfalls);
+                    {settings_.position_iterations, 0.0, false}, position_sweeps, pitfalls,
+                    &bodies_);
   } else {
     solve_recording(pgs_, velocity_, settings_.step.iterations, lambda_,
-                    report != nullptr ? &report->velocity : nullptr, pitfalls);
+                    report != nullptr ? &report->velocity : nullptr, pitfalls, &bodies_);
     if (push) {
       solve_recording(pgs_, split_impulse_.position(), settings_.position_iterations,
                       split_impulse_.lambda(), report != nullptr ? &report->position : nullptr,

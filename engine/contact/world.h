@@ -14,7 +14,8 @@
 //     7. integrate   chapter 2's step under F_ext + F_c                          (eq. 2-1..2-8)
 //   λ is a force; the impulse over the step is λ Δt. With split impulse (the default, beyond
 //   the text) step 5 also solves for the push-out velocity, which step 7 lends to the bodies
-//   for the position update only.
+//   for the position update only. Where PGS sweeps in parts, step 6 is made in its last sweep,
+//   each group's terms once its λ are final (PgsSolver::solve's `forces_to`): the same sums.
 // Step k goes from t = k Δt to t = (k + 1) Δt.
 #pragma once
 
@@ -123,6 +124,7 @@ class World {
   void find_collisions(std::size_t first, std::size_t last, std::vector<FreshCollision>& found) const;
   void update_cache();
   void build_rows();
+  // Steps 5 and 6.
   void solve(WorldReport* report);
   void take_method_step(WorldReport* report);
   void remember_lambdas(WorldReport* report);
