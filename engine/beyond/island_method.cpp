@@ -55,10 +55,11 @@ class IslandMethod final : public StepMethod {
                      s.step.pitfalls);
       }
     }
+    bool forces_added = false;  // F_c = Jᵀ λ, by a pile's sweeps
     if (to_push) {
-      solve_island_beside(problem.velocity, islands_.begin()[beside], s.step.iterations,
-                          work_[beside], pgs_, lambda, split_, s.position_iterations,
-                          s.step.pitfalls);
+      forces_added = solve_island_beside(problem.velocity, islands_.begin()[beside],
+                                         s.step.iterations, work_[beside], pgs_, lambda, split_,
+                                         s.position_iterations, bodies, s.step.pitfalls);
       split_.take_push_out(pgs_, s.step.dt, problem.workers);
     } else if (push_out_taken) {
       // nothing to push out (split_.prepare left the push-out empty): the island alone
@@ -68,7 +69,8 @@ class IslandMethod final : public StepMethod {
     if (report != nullptr) {
       report->velocity.solution.residuals = {problem.velocity.residual(lambda.data())};
     }
-    finish_step(problem, bodies, lambda, skip_, split_, pgs_, report, push_out_taken);
+    finish_step(problem, bodies, lambda, skip_, split_, pgs_, report, push_out_taken,
+                forces_added);
     const std::vector<Vec6>& push = split_.push_out();
     if (push.empty()) return;
     for (std::size_t b = 0; b < bodies.size(); ++b) {

@@ -59,22 +59,26 @@ IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Isl
   return how;
 }
 
-void solve_island_beside(const Mlcp& mlcp, const Island& island, int sweeps,
+bool solve_island_beside(const Mlcp& mlcp, const Island& island, int sweeps,
                          IslandWorkspace& work, PgsSolver& pgs, std::vector<double>& lambda,
-                         SplitImpulse& split, int position_sweeps, Pitfalls pitfalls) {
+                         SplitImpulse& split, int position_sweeps, std::vector<RigidBody>& bodies,
+                         Pitfalls pitfalls) {
   const Own own = own_of(mlcp, island, work, lambda);
+  // an island of every row is the MLCP itself: its F_c is the whole step's
+  const bool whole = &own.mlcp == &mlcp;
   SweepResult island_sweeps;
   SweepResult position_sweeps_run;
   pgs.solve_both(own.mlcp, own.lambda, {sweeps, 0.0, false}, island_sweeps, split.position(),
                  split.lambda().data(), {position_sweeps, 0.0, false}, position_sweeps_run,
-                 pitfalls);
+                 pitfalls, whole ? &bodies : nullptr);
   copy_back(island, work, lambda);
+  return whole;
 }
 
 void finish_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
                  const std::vector<double>& lambda, const std::vector<unsigned char>& skip,
                  SplitImpulse& split, PgsSolver& pgs, WorldReport* report,
-                 bool push_out_taken) {
+                 bool push_out_taken, bool forces_added) {
   const WorldSettings& s = problem.settings;
   if (!push_out_taken) {
     split.solve(problem.velocity, problem.pairs, s.contact, s.step, s.position_iterations, pgs,
@@ -82,7 +86,7 @@ void finish_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
   }
   // eq. 3-11, 5-9: F_c = Jᵀ λ (nothing on a skipped body: its rows' λ are zero here); with
   // workers, each thread adds to and steps its own runs of the bodies, as the World's step does
-  problem.velocity.add_constraint_forces(bodies, lambda.data(), problem.workers);
+  if (!forces_added) problem.velocity.add_constraint_forces(bodies, lambda.data(), problem.workers);
   // eq. 2-1..2-8 under F_ext + F_c, with the push-out
   integrate_with_push_out(bodies, split.push_out(), s.step.dt, s.step.pitfalls, problem.workers,
                           skip);

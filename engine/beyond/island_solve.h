@@ -39,19 +39,22 @@ IslandSolve solve_island(const Mlcp& mlcp, const Island& island, int sweeps, Isl
 // impulse's position MLCP, made ready by split.prepare() (PgsSolver::solve_both: the position
 // MLCP's parts fill the island's waits on threads). The island's λ and the position MLCP's are
 // those of two solves one after the other, bit for bit; `pgs`'s last solve is then the
-// position MLCP's, so that split.take_push_out() reads it.
-void solve_island_beside(const Mlcp& mlcp, const Island& island, int sweeps,
+// position MLCP's, so that split.take_push_out() reads it. An island of every row (a pile) adds
+// F_c = Jᵀ λ of all of them to `bodies` as it is swept (PgsSolver::solve_both's `forces_to`),
+// and says so: true when finish_step is then to add none.
+bool solve_island_beside(const Mlcp& mlcp, const Island& island, int sweeps,
                          IslandWorkspace& work, PgsSolver& pgs, std::vector<double>& lambda,
-                         SplitImpulse& split, int position_sweeps, Pitfalls pitfalls = {});
+                         SplitImpulse& split, int position_sweeps, std::vector<RigidBody>& bodies,
+                         Pitfalls pitfalls = {});
 
 // Steps 6 and 7 after the velocity solve: the split-impulse push-out (when the settings ask for
 // it, recorded in the report; unless `push_out_taken`, the method having taken it already:
-// solve_island_beside), F_c = Jᵀ λ and chapter 2's step for every body whose `skip` entry is 0
-// (skip empty: every body); a skipped body (advanced by the method itself) only has its forces
-// cleared.
+// solve_island_beside), F_c = Jᵀ λ (unless `forces_added`: solve_island_beside) and chapter
+// 2's step for every body whose `skip` entry is 0 (skip empty: every body); a skipped body
+// (advanced by the method itself) only has its forces cleared.
 void finish_step(const StepProblem& problem, std::vector<RigidBody>& bodies,
                  const std::vector<double>& lambda, const std::vector<unsigned char>& skip,
                  SplitImpulse& split, PgsSolver& pgs, WorldReport* report,
-                 bool push_out_taken = false);
+                 bool push_out_taken = false, bool forces_added = false);
 
 }  // namespace lamina
