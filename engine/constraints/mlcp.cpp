@@ -90,13 +90,6 @@ Vec6 velocity_of(const RigidBody& body) {
   return v;
 }
 
-Vec6 external_force_of(const RigidBody& body) {
-  Vec6 f;
-  f.head<3>() = body.force;
-  f.tail<3>() = body.torque;
-  return f;
-}
-
 void unconstrained_velocities(const std::vector<RigidBody>& bodies, double dt,
                               std::vector<Vec6>& out, Workers* workers) {
   out.resize(bodies.size());

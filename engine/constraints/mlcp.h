@@ -23,9 +23,15 @@
 
 namespace lamina {
 
-// Body b's 6-vector [v; ω] (eq. 3-5) and [F; τ] of the forces accumulated on it (eq. 3-9).
+// Body b's 6-vector [v; ω] (eq. 3-5) and [F; τ] of the forces accumulated on it (eq. 3-9;
+// inline: PGS's last sweep reads it per group, add_group_forces).
 Vec6 velocity_of(const RigidBody& body);
-Vec6 external_force_of(const RigidBody& body);
+inline Vec6 external_force_of(const RigidBody& body) {
+  Vec6 f;
+  f.head<3>() = body.force;
+  f.tail<3>() = body.torque;
+  return f;
+}
 
 // M⁻¹ X for one body's 6-vector X: [m⁻¹ X_v; I⁻¹ X_ω] (eq. 3-12, the text's Convert).
 Vec6 inverse_mass_times(const RigidBody& body, const Vec6& block);
@@ -195,18 +201,9 @@ class Mlcp {
   std::vector<unsigned char> planar_in_run_;  // scratch of assemble
 };
 
-// Body b's accumulated force and torque in the layout of N: [f; τ], or [f_x f_y τ_z] in the plane.
-template <int N>
-Block<N> wrench_block(const RigidBody& body) {
-  if constexpr (N == 3) {
-    return Block<3>(body.force.x(), body.force.y(), body.torque.z());
-  } else {
-    Block<6> w;
-    w << body.force, body.torque;
-    return w;
-  }
-}
-// The same written back (in the plane, the other three components left as they are).
+// Body b's accumulated force and torque set from a block in the layout of N, [f; τ] or
+// [f_x f_y τ_z] (in the plane the other three components left as they are): the inverse of
+// cut<N>(external_force_of(body)).
 template <int N>
 void set_wrench_block(RigidBody& body, const Block<N>& w) {
   if constexpr (N == 3) {
@@ -229,8 +226,8 @@ void add_group_forces(const PackedRow<N>* rows, const double* lambda, int first,
   const std::array<int, 2> map = rows[first].map;
   to[1] = to[1] && map[1] >= 0;
   // (a body not to be added to sums from zero, and is left alone)
-  Block<N> f1 = to[0] ? wrench_block<N>(bodies[map[0]]) : Block<N>::Zero();
-  Block<N> f2 = to[1] ? wrench_block<N>(bodies[map[1]]) : Block<N>::Zero();
+  Block<N> f1 = to[0] ? cut<N>(external_force_of(bodies[map[0]])) : Block<N>::Zero();
+  Block<N> f2 = to[1] ? cut<N>(external_force_of(bodies[map[1]])) : Block<N>::Zero();
   for (int i = first; i < last; ++i) add_force_term(rows[i], lambda[i], f1, f2);
   if (to[0]) set_wrench_block<N>(bodies[map[0]], f1);
   if (to[1]) set_wrench_block<N>(bodies[map[1]], f2);
