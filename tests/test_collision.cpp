@@ -351,7 +351,7 @@ TEST_SUITE("Collision") {
     ContactCache cache;
     cache.update({FreshCollision{BodyPair{0, 1}, touch}, FreshCollision{BodyPair{0, 2}, touch},
                   FreshCollision{BodyPair{1, 2}, touch}},
-                 poses, shapes, materials, CacheSettings{});
+                 {}, poses, shapes, materials, CacheSettings{});
     REQUIRE(cache.pairs().size() == 3);
     CHECK(cache.cursor_at(BodyPair{0, 1}) == 0);
     CHECK(cache.cursor_at(BodyPair{0, 2}) == 1);
@@ -360,9 +360,12 @@ TEST_SUITE("Collision") {
     CHECK(cache.cursor_at(BodyPair{2, 3}) == 3);
     for (const BodyPair& pair : {BodyPair{0, 2}, BodyPair{1, 2}}) {
       size_t cursor = cache.cursor_at(pair);
-      CHECK(cache.cached_points(pair, poses, cursor).count == 1);
+      const ContactPair* kept = cache.find(pair, cursor);
+      REQUIRE(kept != nullptr);
+      CHECK(kept->bodies == pair);
+      CHECK(cached_points(*kept, poses).count == 1);
     }
     size_t past = cache.cursor_at(BodyPair{0, 3});
-    CHECK(cache.cached_points(BodyPair{0, 3}, poses, past).count == 0);  // not kept
+    CHECK(cache.find(BodyPair{0, 3}, past) == nullptr);  // not kept
   }
 }

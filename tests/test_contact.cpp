@@ -357,11 +357,11 @@ TEST_SUITE("World") {
       std::vector<Pose2> poses{Pose2{Vec2(0.0, -0.5)}, Pose2{Vec2(0.0, 0.5)}};
       Collision corner;
       corner.point = Vec2(-0.5, 0.0);  // the box's corner, depth 0, on the ground's face
-      cache.update({FreshCollision{BodyPair{0, 1}, corner}}, poses, shapes, materials, settings);
+      cache.update({FreshCollision{BodyPair{0, 1}, corner}}, {}, poses, shapes, materials, settings);
       REQUIRE(cache.pairs().size() == 1);
       CHECK(cache.pairs()[0].contacts[0].anchor[0] == Vec2(-0.5, 0.5));  // ground frame
       poses[1].x.x() += s;
-      cache.update({}, poses, shapes, materials, settings);
+      cache.update({}, {}, poses, shapes, materials, settings);
       REQUIRE(cache.pairs().size() == 1);
       const Contact& kept = cache.pairs()[0].contacts[0];
       CHECK(kept.origin == ContactOrigin::kept);

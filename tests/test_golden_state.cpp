@@ -55,18 +55,18 @@ struct Golden {
 // (Lemke's pivots, an LDLᵀ) and substeps are held to the same bit-for-bit rule. pyramid:10 is
 // one island past the exact solve's size, swept by PGS as `pgs` sweeps it: the same bits.
 const Golden golden[] = {
-    {"box-on-ground-tilted", "pgs", 0x81d2f3b5c3005076},
-    {"vertical-stack", "pgs", 0x230390aa1687f0ed},
-    {"see-saw", "pgs", 0xd1433383d13038d6},
+    {"box-on-ground-tilted", "pgs", 0xf40b6f38efff4937},
+    {"vertical-stack", "pgs", 0xbda9efeaeac88115},
+    {"see-saw", "pgs", 0xc74246b0aae186c6},
     {"chain", "pgs", 0xfb2fcc332abcc7ac},
     {"pendulum", "pgs", 0x1d0805d1cef3d99e},
-    {"pyramid:10", "pgs", 0x4d2eefdfe82b5abf},
-    {"box-on-ground-tilted", "islands", 0x053f04b0ebbeb638},
-    {"vertical-stack", "islands", 0x4148beaa127480e1},
-    {"see-saw", "islands", 0x20d9f7bd447a351f},
-    {"chain", "islands", 0xabd34558dc598ddb},
+    {"pyramid:10", "pgs", 0x478636405dfc2cfd},
+    {"box-on-ground-tilted", "islands", 0xcab5a6561f167131},
+    {"vertical-stack", "islands", 0x8857f14a9859dd40},
+    {"see-saw", "islands", 0x654e11249e445354},
+    {"chain", "islands", 0xb0823dccf35c469d},
     {"pendulum", "islands", 0x6771b31d283077ad},
-    {"pyramid:10", "islands", 0x4d2eefdfe82b5abf},
+    {"pyramid:10", "islands", 0x478636405dfc2cfd},
 };
 
 // The raw bytes of every body's x, q (x, y, z, w), v and ω, in body order.

@@ -61,13 +61,14 @@ using namespace lamina;
 
 namespace {
 
-// Allocations made by steps 101..200 of a built-in scene, after 100 steps to settle and grow
+// Allocations made by 100 steps of a built-in scene, after `settle` steps to settle and grow
 // every buffer, by the method `solver`.
-long allocations_in_steady_steps(const std::string& scene_name, const std::string& solver = "pgs") {
+long allocations_in_steady_steps(const std::string& scene_name, const std::string& solver = "pgs",
+                                 int settle = 100) {
   Scene scene = builtin_scene(scene_name);
   scene.solver = solver;
   World world = build_world(scene, world_settings(scene));
-  for (int step = 0; step < 100; ++step) world.step();
+  for (int step = 0; step < settle; ++step) world.step();
   const long before = allocations.load();
   for (int step = 0; step < 100; ++step) world.step();
   return allocations.load() - before;
@@ -116,7 +117,9 @@ TEST_SUITE("StepAllocations") {
     // with the memory of its own (one workspace for all would grow and shrink between them)
     CHECK(allocations_in_steady_steps("vertical-stack", "islands") == 0);
     CHECK(allocations_in_steady_steps("pyramid", "islands") == 0);
-    CHECK(allocations_in_steady_steps("capsule-pile", "islands") == 0);
+    // the capsule pile by islands comes to rest at step 119 (its last contact of a gap let go,
+    // the islands split one last time: measured in its trace), so it settles for 150
+    CHECK(allocations_in_steady_steps("capsule-pile", "islands", 150) == 0);
     CHECK(allocations_in_steady_steps("hexagon-pyramid", "islands") == 0);
     // joints: substepped, their rows written again each substep; the pendulum's and the ball and
     // chain's by LDLᵀ (rows of equalities only), the angle limit's by Lemke. Scenes whose islands

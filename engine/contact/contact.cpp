@@ -19,6 +19,10 @@ const Pose2& pose_of(int k, const Pose2& pose1, const Pose2& pose2) { return k =
 
 }  // namespace
 
+RelativePose relative_pose(const Pose2& pose1, const Pose2& pose2) {
+  return {pose1.to_body(pose2.x), pose1.R.transpose() * pose2.R.col(0)};
+}
+
 Contact make_contact(const Collision& collision, const Pose2& pose1, const Pose2& pose2) {
   Contact contact;
   const int ref = collision.reference;

@@ -50,6 +50,15 @@ struct Contact {
   bool fresh() const { return origin != ContactOrigin::kept; }
 };
 
+// Body 2's pose seen from body 1, which contact recycling compares from step to step
+// (contact_cache.h): how far the pair moved relative to each other, whatever it moved in the world.
+struct RelativePose {
+  Vec2 offset = Vec2::Zero();  // R1ᵀ (x2 − x1), in m
+  Vec2 turn = Vec2::UnitX();   // R1ᵀ R2 e_x: (cos, sin) of body 2's angle from body 1's
+};
+
+RelativePose relative_pose(const Pose2& pose1, const Pose2& pose2);
+
 // The contacts of one pair of bodies: at most two in the plane (see ContactCache).
 struct ContactPair {
   BodyPair bodies;                    // (body 1, body 2), body 1 < body 2
@@ -58,6 +67,10 @@ struct ContactPair {
   int capacity = 2;                   // most contacts kept: 2, or 1 when a circle is in the pair
   int count = 0;                      // contacts in use
   std::array<Contact, 2> contacts{};  // the first `count` are in use
+  // Contact recycling (contact_cache.h): where the narrow phase last found a point of the pair,
+  // and whether that point was one the pair held already (re-found: nothing left to gain).
+  RelativePose found_at;              // the bodies' relative pose then
+  bool settled = false;               // its point was re-found
   RowRange rows;                      // its rows in this step's MLCP: contact rows, then friction rows
 };
 

@@ -23,9 +23,10 @@ ContactPair new_pair(const BodyPair& bodies, const std::vector<Shape>& shapes,
   return pair;
 }
 
-// Step 1: re-place, re-measure, re-anchor or drop the cached points of a pair.
+// Step 1: re-place, re-measure, re-anchor or drop the cached points of a pair. A recycled pair's
+// points are all re-anchored, as the narrow phase would have anchored them had it re-found them.
 void refresh(ContactPair& pair, const std::vector<Pose2>& poses, const std::vector<Shape>& shapes,
-             const CacheSettings& settings) {
+             const CacheSettings& settings, bool recycled) {
   const Pose2& pose1 = poses[pair.bodies.first];
   const Pose2& pose2 = poses[pair.bodies.second];
   int kept = 0;
@@ -33,8 +34,12 @@ void refresh(ContactPair& pair, const std::vector<Pose2>& poses, const std::vect
     Contact c = pair.contacts[k];
     place(c, pose1, pose2);
     c.origin = ContactOrigin::kept;
-    // |drift| > drift_limit, compared squared (no square root for every kept point)
-    if (settings.reanchor && c.drift_squared > settings.drift_limit * settings.drift_limit) {
+    if (recycled) {
+      // within a hair of where the narrow phase found it on the surface: kept on it
+      reanchor(c, pose1, pose2);
+    } else if (settings.reanchor &&
+               c.drift_squared > settings.drift_limit * settings.drift_limit) {
+      // |drift| > drift_limit, compared squared (no square root for every kept point)
       reanchor(c, pose1, pose2);
       const int ref_body = c.reference == 0 ? pair.bodies.first : pair.bodies.second;
       if (!contains(shapes[ref_body], poses[ref_body], reference_point(c, pose1, pose2),
@@ -49,8 +54,8 @@ void refresh(ContactPair& pair, const std::vector<Pose2>& poses, const std::vect
 }
 
 // Step 2: the fresh deepest point replaces a nearby cached point (inheriting its λ), is added,
-// or replaces the cached point nearer to it when the pair is full.
-void merge(ContactPair& pair, Contact fresh, const CacheSettings& settings) {
+// or replaces the cached point nearer to it when the pair is full. True when it was re-found.
+bool merge(ContactPair& pair, Contact fresh, const CacheSettings& settings) {
   int nearest = -1;
   double nearest_distance = 0.0;
   for (int k = 0; k < pair.count; ++k) {
@@ -72,6 +77,7 @@ void merge(ContactPair& pair, Contact fresh, const CacheSettings& settings) {
   } else {
     pair.contacts[nearest] = fresh;
   }
+  return same_point;
 }
 
 void require_margin(double value, const char* name) {
@@ -87,6 +93,8 @@ void validate(const CacheSettings& s) {
   require_margin(s.merge_distance, "merge_distance");
   require_margin(s.drift_limit, "drift_limit");
   require_margin(s.ties.tolerance, "ties.tolerance");
+  require_margin(s.recycle_distance, "recycle_distance");
+  require_margin(s.recycle_angle, "recycle_angle");
 }
 
 size_t ContactCache::cursor_at(const BodyPair& bodies) const {
@@ -96,20 +104,34 @@ size_t ContactCache::cursor_at(const BodyPair& bodies) const {
       pairs_.begin());
 }
 
-CachedPoints ContactCache::cached_points(const BodyPair& bodies, const std::vector<Pose2>& poses,
-                                         size_t& cursor) const {
-  CachedPoints cached;
+const ContactPair* ContactCache::find(const BodyPair& bodies, size_t& cursor) const {
   while (cursor < pairs_.size() && pairs_[cursor].bodies < bodies) ++cursor;
-  if (cursor == pairs_.size() || !(pairs_[cursor].bodies == bodies)) return cached;
-  const ContactPair& pair = pairs_[cursor];
+  if (cursor == pairs_.size() || !(pairs_[cursor].bodies == bodies)) return nullptr;
+  return &pairs_[cursor];
+}
+
+CachedPoints cached_points(const ContactPair& pair, const std::vector<Pose2>& poses) {
+  CachedPoints cached;
   for (int k = 0; k < pair.count; ++k) {
     cached.points[cached.count++] =
-        placed_point(pair.contacts[k], poses[bodies.first], poses[bodies.second]);
+        placed_point(pair.contacts[k], poses[pair.bodies.first], poses[pair.bodies.second]);
   }
   return cached;
 }
 
-void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::vector<Pose2>& poses,
+bool recyclable(const ContactPair& pair, const std::vector<Pose2>& poses,
+                const CacheSettings& settings) {
+  if (!settings.recycle || !pair.settled || pair.count < pair.capacity) return false;
+  const RelativePose now = relative_pose(poses[pair.bodies.first], poses[pair.bodies.second]);
+  // compared squared: no square root for every pair of a pile
+  const double distance = settings.recycle_distance;
+  const double angle = settings.recycle_angle;
+  return (now.offset - pair.found_at.offset).squaredNorm() <= distance * distance &&
+         (now.turn - pair.found_at.turn).squaredNorm() <= angle * angle;
+}
+
+void ContactCache::update(const std::vector<FreshCollision>& fresh,
+                          const std::vector<char>& recycled, const std::vector<Pose2>& poses,
                           const std::vector<Shape>& shapes, const std::vector<Material>& materials,
                           const CacheSettings& settings, Workers* workers) {
   if (!settings.enabled) pairs_.clear();
@@ -130,7 +152,7 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::v
     std::vector<ContactPair>& next = runs == 1 ? next_ : next_of_run_[t];
     next.clear();
     merge_run(pairs_.begin() + first, pairs_.begin() + last,
-              t == 0 ? fresh.begin() : fresh_from(first, false),
+              recycled.empty() ? nullptr : recycled.data() + first, t == 0 ? fresh.begin() : fresh_from(first, false),
               fresh_from(last, t == runs - 1), poses, shapes, materials, settings, next);
   };
   run_on(workers, update_run);
@@ -140,6 +162,7 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh, const std::v
 
 void ContactCache::merge_run(std::vector<ContactPair>::const_iterator cached,
                              std::vector<ContactPair>::const_iterator cached_end,
+                             const char* recycled,
                              std::vector<FreshCollision>::const_iterator found,
                              std::vector<FreshCollision>::const_iterator found_end,
                              const std::vector<Pose2>& poses, const std::vector<Shape>& shapes,
@@ -153,12 +176,17 @@ void ContactCache::merge_run(std::vector<ContactPair>::const_iterator cached,
         found != found_end && (cached == cached_end || !(cached->bodies < found->bodies));
     ContactPair pair = take_cached ? *cached : new_pair(found->bodies, shapes, materials);
     if (take_cached) {
-      refresh(pair, poses, shapes, settings);
+      const bool skipped = recycled != nullptr && *recycled++ != 0;
+      refresh(pair, poses, shapes, settings, skipped);
+      // collided and not found, or no longer a candidate: no longer settled
+      pair.settled = skipped;
       ++cached;
     }
     if (take_fresh) {
-      merge(pair, make_contact(found->collision, poses[pair.bodies.first], poses[pair.bodies.second]),
-            settings);
+      const Pose2& pose1 = poses[pair.bodies.first];
+      const Pose2& pose2 = poses[pair.bodies.second];
+      pair.settled = merge(pair, make_contact(found->collision, pose1, pose2), settings);
+      pair.found_at = relative_pose(pose1, pose2);
       ++found;
     }
     if (pair.count > 0) next.push_back(pair);

@@ -28,7 +28,8 @@ const std::vector<SolverInfo>& solver_list() {
        "restitution"},
       {"pgs",
        "the text's PGS with split impulse, a 5 mm slop, ties broken, cached points re-anchored, "
-       "gaps closed, restitution, one friction row per two-point manifold"},
+       "gaps closed, restitution, one friction row per two-point manifold, a pair that barely "
+       "moved not collided again"},
   };
   return list;
 }
@@ -45,6 +46,7 @@ WorldSettings with_solver(WorldSettings settings, const std::string& name) {
   contact.friction = text ? FrictionRows::per_point : FrictionRows::per_manifold;
   settings.cache.ties.break_ties = !text;
   settings.cache.reanchor = !text;
+  settings.cache.recycle = !text;
   return settings;
 }
 

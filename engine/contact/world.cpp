@@ -165,15 +165,19 @@ void World::detect_collisions() {
   sort_and_sweep(boxes_, sweep_memory_, candidate_pairs_, workers_.get());
   // each run its share of the candidates, in order, its collisions appended in order
   fresh_of_thread_.resize(runs);
+  // a flag per cached pair, set by the run that meets it among its candidates (one at most:
+  // both are sorted by pair)
+  recycled_.assign(cache_.pairs().size(), 0);
   run_on(workers_.get(), [&](int t) {
     const auto [first, last] = share_of(candidate_pairs_.size(), t, runs);
-    find_collisions(first, last, runs == 1 ? fresh_ : fresh_of_thread_[t]);
+    find_collisions(first, last, runs == 1 ? fresh_ : fresh_of_thread_[t], recycled_);
   });
   if (runs > 1) join_runs(fresh_of_thread_, fresh_, workers_.get());
 }
 
 void World::find_collisions(std::size_t first, std::size_t last,
-                            std::vector<FreshCollision>& found) const {
+                            std::vector<FreshCollision>& found,
+                            std::vector<char>& recycled) const {
   found.clear();
   // the cache's pairs, walked along with the sorted candidates from this run's first (a run
   // that starts mid-way once walked every pair before it: on two threads, the second thread
@@ -184,8 +188,13 @@ void World::find_collisions(std::size_t first, std::size_t last,
     if (bodies_[pair.first].is_static() && bodies_[pair.second].is_static()) continue;
     if (std::binary_search(jointed_.begin(), jointed_.end(), pair)) continue;
     // With the cache off there is nothing to break ties against: a first contact every step.
-    const CachedPoints cached =
-        settings_.cache.enabled ? cache_.cached_points(pair, poses_, cursor) : CachedPoints{};
+    const ContactPair* kept = settings_.cache.enabled ? cache_.find(pair, cursor) : nullptr;
+    // contact recycling: a full pair that barely moved keeps its points, not collided again
+    if (kept != nullptr && recyclable(*kept, poses_, settings_.cache)) {
+      recycled[cursor] = 1;
+      continue;
+    }
+    const CachedPoints cached = kept != nullptr ? cached_points(*kept, poses_) : CachedPoints{};
     const std::optional<Collision> collision =
         collide(shapes_[pair.first], poses_[pair.first], shapes_[pair.second],
                 poses_[pair.second], cached, settings_.cache.ties);
@@ -194,7 +203,7 @@ void World::find_collisions(std::size_t first, std::size_t last,
 }
 
 void World::update_cache() {
-  cache_.update(fresh_, poses_, shapes_, materials_, settings_.cache, workers_.get());
+  cache_.update(fresh_, recycled_, poses_, shapes_, materials_, settings_.cache, workers_.get());
 }
 
 void World::build_rows() {

@@ -121,7 +121,8 @@ class World {
   void apply_forces();
   void detect_collisions();
   // The narrow phase of candidate_pairs_[first, last): their collisions, in order.
-  void find_collisions(std::size_t first, std::size_t last, std::vector<FreshCollision>& found) const;
+  void find_collisions(std::size_t first, std::size_t last, std::vector<FreshCollision>& found,
+                       std::vector<char>& recycled) const;
   void update_cache();
   void build_rows();
   // Steps 5 and 6.
@@ -151,6 +152,7 @@ class World {
   std::vector<BodyPair> candidate_pairs_;    // the broad phase's pairs
   std::vector<FreshCollision> fresh_;        // the narrow phase's deepest points
   PerRun<std::vector<FreshCollision>> fresh_of_thread_;  // on threads: each run's
+  std::vector<char> recycled_;  // per cached pair: the narrow phase recycled it (contact_cache.h)
   std::vector<ConstraintRow> rows_;          // the joints' rows as written (the contacts' are
                                              // packed into velocity_ as they are written)
   std::size_t first_joint_row_ = 0;          // where the joints' rows start in the MLCP

@@ -170,7 +170,7 @@ Comparison table_comparison(const TableScene& s) {
   const bool heavy = s.scene.rfind("heavy-on-light", 0) == 0;
   const bool chain = s.scene == "ball-and-chain:100";
   // the chain's ball swings up to the pin's height on both sides: room above it for the numbers
-  if (chain) c.headroom = 2.0;
+  if (chain) c.headroom = 3.0;
   c.measure = heavy ? tr("deepest overlap (mm)")
               : chain ? tr("pin to ball past its rest length (%)")
               : s.scene == "vertical-stack:20" ? tr("top box moved (m)") : tr("apex moved (m)");
