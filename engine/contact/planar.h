@@ -20,8 +20,12 @@ struct Pose2 {
 
   // eq. 1-25: p = x + R r.
   Vec2 to_world(const Vec2& r) const { return x + R * r; }
-  // eq. 5-12: r = Rᵀ (p − x).
-  Vec2 to_body(const Vec2& p) const { return R.transpose() * (p - x); }
+  // eq. 5-12: r = Rᵀ (p − x), each component a column of R dotted with p − x (written out:
+  // Eigen's product was a call of its own in the narrow phase and the cache's update)
+  Vec2 to_body(const Vec2& p) const {
+    const Vec2 d = p - x;
+    return Vec2(R(0, 0) * d.x() + R(1, 0) * d.y(), R(0, 1) * d.x() + R(1, 1) * d.y());
+  }
 };
 
 inline Pose2 planar_pose(const RigidBody& body) {
