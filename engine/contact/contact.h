@@ -71,6 +71,7 @@ struct ContactPair {
   // and whether that point was one the pair held already (re-found: nothing left to gain).
   RelativePose found_at;              // the bodies' relative pose then
   bool settled = false;               // its point was re-found
+  bool recycled = false;              // this step: its points kept without the narrow phase
   RowRange rows;                      // its rows in this step's MLCP: contact rows, then friction rows
 };
 

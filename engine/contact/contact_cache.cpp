@@ -178,6 +178,7 @@ void ContactCache::merge_run(std::vector<ContactPair>::const_iterator cached,
     if (take_cached) {
       const bool skipped = recycled != nullptr && *recycled++ != 0;
       refresh(pair, poses, shapes, settings, skipped);
+      pair.recycled = skipped;
       // collided and not found, or no longer a candidate: no longer settled
       pair.settled = skipped;
       ++cached;
@@ -186,6 +187,7 @@ void ContactCache::merge_run(std::vector<ContactPair>::const_iterator cached,
       const Pose2& pose1 = poses[pair.bodies.first];
       const Pose2& pose2 = poses[pair.bodies.second];
       pair.settled = merge(pair, make_contact(found->collision, pose1, pose2), settings);
+      pair.recycled = false;
       pair.found_at = relative_pose(pose1, pose2);
       ++found;
     }

@@ -93,6 +93,10 @@ Section contact_section(int index, const ContactPair& pair, const Contact& c,
           ? tr("new: this step's deepest point, no λ from before (Fig 4-2)")
       : c.origin == ContactOrigin::refound
           ? tr("re-found: this step's deepest point where a cached point was, warm-started from its λ")
+      : pair.recycled
+          ? tr("kept by the cache, its pair recycled (beyond the text): it barely moved since its "
+               "points were found, so it was not collided again; re-placed from its anchors "
+               "(eq. 5-12) and re-anchored")
           : tr("kept by the cache, re-placed from its anchors (eq. 5-12, Fig 4-4)");
   Json rows = Json::array({c.row});
   for (int r : c.friction_rows) {
