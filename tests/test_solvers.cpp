@@ -156,7 +156,9 @@ TEST_SUITE("Solvers") {
       WorldReport report;
       world.step(report);
       int recycled = 0, refound = 0, kept = 0;
-      for (const tutorial::Section& s : view::explain_world_step(world, report, {"ground", "box"})) {
+      const tutorial::Explanation sections =
+          view::explain_world_step(world, report, {"ground", "box"});
+      for (const tutorial::Section& s : sections) {
         if (s.title.rfind("contact ", 0) != 0) continue;
         recycled += s.title.find("its pair recycled") != std::string::npos ? 1 : 0;
         refound += s.title.find("re-found") != std::string::npos ? 1 : 0;

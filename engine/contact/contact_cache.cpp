@@ -152,8 +152,9 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh,
     std::vector<ContactPair>& next = runs == 1 ? next_ : next_of_run_[t];
     next.clear();
     merge_run(pairs_.begin() + first, pairs_.begin() + last,
-              recycled.empty() ? nullptr : recycled.data() + first, t == 0 ? fresh.begin() : fresh_from(first, false),
-              fresh_from(last, t == runs - 1), poses, shapes, materials, settings, next);
+              recycled.empty() ? nullptr : recycled.data() + first,
+              t == 0 ? fresh.begin() : fresh_from(first, false), fresh_from(last, t == runs - 1),
+              poses, shapes, materials, settings, next);
   };
   run_on(workers, update_run);
   if (runs > 1) join_runs(next_of_run_, next_, workers);
