@@ -120,7 +120,8 @@ class World {
   void advance(WorldReport* report);
   void apply_forces();
   void detect_collisions();
-  // The narrow phase of candidate_pairs_[first, last): their collisions, in order.
+  // The narrow phase of candidate_pairs_[first, last): their collisions, in order, and the
+  // cached pairs it recycled instead, marked in `recycled` (by their index in the cache).
   void find_collisions(std::size_t first, std::size_t last, std::vector<FreshCollision>& found,
                        std::vector<char>& recycled) const;
   void update_cache();
