@@ -26,7 +26,7 @@ std::string fitted(Canvas& c, const std::string& line, const TextStyle& style, d
 }
 
 // The caption at the top left, shrunk when it would run into the status line at the top right,
-// down to 8 px, and cut short with "…" when even that is too long (a 320 × 180 frame). The
+// down to 8 px, and cut short with "…" only when even that is too long (a 320 × 180 frame). The
 // status gets at least 30 % of the width, so a growing step count does not change the caption's
 // size from one frame of a sequence to the next. Both lines are labels of the layout: the layout
 // check finds them over each other.
@@ -36,9 +36,11 @@ void paint_top_bar(const Frame& frame, Canvas& c) {
       std::max(c.text.width(frame.status, Typeface::sans, c.style.text_px), 0.3 * c.size.width);
   const double room = c.size.width - 4.0 * c.style.margin - status;
   const double natural = c.text.width(frame.caption, Typeface::bold, c.style.caption_px);
-  const int px = natural <= room
-                     ? c.style.caption_px
-                     : std::max(8, static_cast<int>(c.style.caption_px * room / natural));
+  int px = natural <= room ? c.style.caption_px
+                           : std::max(8, static_cast<int>(c.style.caption_px * room / natural));
+  // a face's width is not quite proportional to its size (hinting, rounding): a pixel smaller
+  // while it still does not fit, so that a caption is cut short only below 8 px
+  while (px > 8 && c.text.width(frame.caption, Typeface::bold, px) > room) --px;
   const TextStyle caption{Typeface::bold, px, palette::ink};
   const Rect caption_box =
       c.write(fitted(c, frame.caption, caption, room), caption, Vec2(c.style.margin, middle));
