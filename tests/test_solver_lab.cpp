@@ -274,7 +274,7 @@ TEST_SUITE("SolverLab") {
     // than touching at 10 s; vertical-stack:20 topples (top box 5.5 m away); the chain stretches
     // until the ball lies on the ground (87 %); pyramid:20 stands (3.4 mm). Lamina's soft step
     // (v3's colour order, anchors, bias and a corner as the first point of a flat touch)
-    // measured 34.9 mm, 486.7 mm and 351.9 mm, 2.6 m, 99.8 %, 3.3 mm. Tolerances: 1 mm on :100
+    // measured 34.9 mm, 486.7 mm and 353.1 mm, 2.6 m, 99.8 %, 3.3 mm. Tolerances: 1 mm on :100
     // (the same springs, the same depth); 10 % on :1000, which v3 itself holds on a knife edge
     // (2000 goes through in both); the rest as the table's ✓/✗ can tell.
     const LabRun light = run_lab("heavy-on-light:100", "soft-step", ten_seconds);
