@@ -13,28 +13,21 @@
 #include "contact/contact_cache.h"
 #include "contact/solvers.h"
 #include "contact/world.h"
+#include "scene/builtin_scenes.h"
+#include "scene/scene_world.h"
 
 using namespace lamina;
 
 namespace {
 
-// `pgs`'s settings (recycling on), or the same with recycling off.
-WorldSettings pgs_settings(bool recycle) {
-  WorldSettings settings = with_solver(WorldSettings(), "pgs");
+// A built-in scene (the ground, body 0, and a unit box, body 1) stepped by `pgs`, with
+// recycling on or off.
+World pgs_world(const Scene& scene, bool recycle) {
+  Scene by_pgs = scene;
+  by_pgs.solver = "pgs";
+  WorldSettings settings = world_settings(by_pgs);
   settings.cache.recycle = recycle;
-  return settings;
-}
-
-// Ground (body 0, top at y = 0) and a unit box (body 1) at height y, turned by `angle`, moving
-// at `speed`.
-World box_on_ground(const WorldSettings& settings, double y, double angle, double speed = 0.0,
-                    double friction = 0.6) {
-  World world(settings);
-  world.add_static_box(20.0, 0.5, Vec3(0.0, -0.5, 0.0), 0.0, Material{friction, 0.0});
-  RigidBody box = box_body(1.0, 0.5, 0.5, Vec3(0.0, y, 0.0), angle);
-  box.v = Vec3(speed, 0.0, 0.0);
-  world.add_body(box, Shape::box(0.5, 0.5), Material{friction, 0.0});
-  return world;
+  return build_world(by_pgs, settings);
 }
 
 // A full, settled pair of a unit box (body 1) on the ground (body 0), found at `poses`.
@@ -107,8 +100,9 @@ TEST_SUITE("ContactRecycling") {
     // The two runs' boxes end 4.5e-10 m apart (measured: the steps that recycled round their
     // sums in another order), so each point is compared from its own box's centre (1e-10 m),
     // and each must be a bottom corner to rounding (1e-12 m), as the narrow phase places it.
-    World recycled = box_on_ground(pgs_settings(true), 2.0, 0.3);
-    World collided = box_on_ground(pgs_settings(false), 2.0, 0.3);
+    const Scene landing = builtin_scene("box-on-ground-tilted");
+    World recycled = pgs_world(landing, true);
+    World collided = pgs_world(landing, false);
     for (int k = 0; k < 300; ++k) {
       recycled.step();
       collided.step();
@@ -139,7 +133,10 @@ TEST_SUITE("ContactRecycling") {
   TEST_CASE("a sliding box is collided every step: it moves past the distance in each") {
     // 1 m/s along the ground is 16.7 mm a step, seventeen times recycle_distance: each step's
     // deepest point is found afresh (re-found), never recycled; the box slows by μ g.
-    World world = box_on_ground(pgs_settings(true), 0.5, 0.0, 1.0, 0.1);
+    Scene sliding = builtin_scene("box-on-ground-resting");
+    for (BodyDescription& body : sliding.bodies) body.friction = 0.1;
+    sliding.bodies[1].velocity = Vec2(1.0, 0.0);
+    World world = pgs_world(sliding, true);
     for (int k = 0; k < 20; ++k) {
       world.step();
       if (k < 5) continue;  // landing: the second corner comes within a step or two

@@ -131,7 +131,8 @@ bool recyclable(const ContactPair& pair, const std::vector<Pose2>& poses,
 }
 
 void ContactCache::update(const std::vector<FreshCollision>& fresh,
-                          const std::vector<char>& recycled, const std::vector<Pose2>& poses,
+                          const std::vector<unsigned char>& recycled,
+                          const std::vector<Pose2>& poses,
                           const std::vector<Shape>& shapes, const std::vector<Material>& materials,
                           const CacheSettings& settings, Workers* workers) {
   if (!settings.enabled) pairs_.clear();
@@ -163,7 +164,7 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh,
 
 void ContactCache::merge_run(std::vector<ContactPair>::const_iterator cached,
                              std::vector<ContactPair>::const_iterator cached_end,
-                             const char* recycled,
+                             const unsigned char* recycled,
                              std::vector<FreshCollision>::const_iterator found,
                              std::vector<FreshCollision>::const_iterator found_end,
                              const std::vector<Pose2>& poses, const std::vector<Shape>& shapes,

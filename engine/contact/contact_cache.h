@@ -70,7 +70,7 @@ class ContactCache {
   const std::vector<ContactPair>& pairs() const { return pairs_; }
 
   // The kept pair of `bodies`, or nullptr when the cache holds none. Pairs are asked for in
-  // sorted order: `cursor` walks the cache once, from 0 or from cursor_at(the first pair asked for).
+  // sorted order: `cursor` walks the cache once, from 0 or from cursor_at(the first one asked).
   const ContactPair* find(const BodyPair& bodies, size_t& cursor) const;
   // Where a cursor asking first for `bodies` may start: the first kept pair not before it
   // (a run of the narrow phase that starts mid-way skips the pairs before it without reading
@@ -81,7 +81,7 @@ class ContactCache {
   // whether the narrow phase recycled it (empty: none); materials give a new pair's μ and e.
   // With `workers`, each of their threads updates a run of the pairs (each pair's update is its
   // own) and the runs are joined in order.
-  void update(const std::vector<FreshCollision>& fresh, const std::vector<char>& recycled,
+  void update(const std::vector<FreshCollision>& fresh, const std::vector<unsigned char>& recycled,
               const std::vector<Pose2>& poses,
               const std::vector<Shape>& shapes, const std::vector<Material>& materials,
               const CacheSettings& settings, Workers* workers = nullptr);
@@ -100,7 +100,7 @@ class ContactCache {
   // `recycled` on; nullptr: none), and the fresh collisions [found, found_end) of the same
   // bodies: the kept pairs appended to `next`, in order.
   void merge_run(std::vector<ContactPair>::const_iterator cached,
-                 std::vector<ContactPair>::const_iterator cached_end, const char* recycled,
+                 std::vector<ContactPair>::const_iterator cached_end, const unsigned char* recycled,
                  std::vector<FreshCollision>::const_iterator found,
                  std::vector<FreshCollision>::const_iterator found_end,
                  const std::vector<Pose2>& poses, const std::vector<Shape>& shapes,

@@ -177,7 +177,7 @@ void World::detect_collisions() {
 
 void World::find_collisions(std::size_t first, std::size_t last,
                             std::vector<FreshCollision>& found,
-                            std::vector<char>& recycled) const {
+                            std::vector<unsigned char>& recycled) const {
   found.clear();
   // the cache's pairs, walked along with the sorted candidates from this run's first (a run
   // that starts mid-way once walked every pair before it: on two threads, the second thread

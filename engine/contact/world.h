@@ -123,7 +123,7 @@ class World {
   // The narrow phase of candidate_pairs_[first, last): their collisions, in order, and the
   // cached pairs it recycled instead, marked in `recycled` (by their index in the cache).
   void find_collisions(std::size_t first, std::size_t last, std::vector<FreshCollision>& found,
-                       std::vector<char>& recycled) const;
+                       std::vector<unsigned char>& recycled) const;
   void update_cache();
   void build_rows();
   // Steps 5 and 6.
@@ -153,7 +153,7 @@ class World {
   std::vector<BodyPair> candidate_pairs_;    // the broad phase's pairs
   std::vector<FreshCollision> fresh_;        // the narrow phase's deepest points
   PerRun<std::vector<FreshCollision>> fresh_of_thread_;  // on threads: each run's
-  std::vector<char> recycled_;  // per cached pair: the narrow phase recycled it (contact_cache.h)
+  std::vector<unsigned char> recycled_;  // per cached pair: recycled by the narrow phase
   std::vector<ConstraintRow> rows_;          // the joints' rows as written (the contacts' are
                                              // packed into velocity_ as they are written)
   std::size_t first_joint_row_ = 0;          // where the joints' rows start in the MLCP
