@@ -140,18 +140,62 @@ TEST_SUITE("OutputFile") {
     // One piece reserves nothing (a frame, written whole, would not use it): 100 kB in 4 KiB
     // blocks, far below the 32 MiB a reservation takes.
     CHECK(allocated_bytes(temporary) < std::uint64_t{1} << 20);
-    file.write(piece);
+    for (int k = 1; k < 12; ++k) file.write(piece);  // 1.2 MB: the first block handed over
     if (can_reserve_in(scratch.path())) {
-      CHECK(allocated_bytes(temporary) >= 2 * piece.size() + OutputFile::reserve_block);
+      CHECK(allocated_bytes(temporary) >= OutputFile::write_block + OutputFile::reserve_block);
     } else {
       MESSAGE("not checked: this file system reserves no space (the commit is still checked)");
     }
     file.commit();
-    // The reservation given back: the 200 kB written and the rest of their last block (4 KiB on
+    // The reservation given back: the 1.2 MB written and the rest of their last block (4 KiB on
     // ext4; 64 KiB allows any block size in use).
-    CHECK(fs::file_size(target) == 2 * piece.size());
-    CHECK(allocated_bytes(target) < 2 * piece.size() + 64 * 1024);
-    CHECK(contents(target) == piece + piece);
+    CHECK(fs::file_size(target) == 12 * piece.size());
+    CHECK(allocated_bytes(target) < 12 * piece.size() + 64 * 1024);
+    std::string all;
+    for (int k = 0; k < 12; ++k) all += piece;
+    CHECK(contents(target) == all);
+  }
+
+  TEST_CASE("pieces after the first reach the file in whole blocks that end at block bounds") {
+    // What the kernel has been handed shows in the temporary's size. The first piece goes as
+    // it is (a file written whole is not held back); the others are gathered until the file
+    // reaches a multiple of write_block, and a piece that spans blocks goes straight through,
+    // up to the last bound it reaches; commit() hands over the rest.
+    const testing::ScratchFolder scratch("output-blocks");
+    const fs::path target = scratch.path() / "trace.jsonl";
+    const fs::path temporary = temporary_path(target);
+    const std::uint64_t block = OutputFile::write_block;
+    std::string expected;
+    const auto piece = [&expected](std::size_t size, char c) {
+      const std::string text(size, c);
+      expected += text;
+      return text;
+    };
+    OutputFile file(target);
+    file.write(piece(100000, 'a'));
+    CHECK(fs::file_size(temporary) == 100000);
+    file.write(piece(300000, 'b'));
+    file.write(piece(300000, 'c'));
+    CHECK(fs::file_size(temporary) == 100000);  // held: the file is short of its first bound
+    file.write(piece(700000, 'd'));             // reaches it: one block up to 1 MiB
+    CHECK(fs::file_size(temporary) == block);
+    file.write(piece(2 * block + 5000, 'e'));  // the held rest and two whole blocks
+    CHECK(fs::file_size(temporary) == 3 * block);
+    file.write(piece(10, 'f'));
+    CHECK(fs::file_size(temporary) == 3 * block);
+    file.commit();
+    CHECK(fs::file_size(target) == expected.size());
+    CHECK(contents(target) == expected);
+  }
+
+  TEST_CASE("a file written whole is written as it is, in one piece") {
+    const testing::ScratchFolder scratch("output-whole");
+    const fs::path target = scratch.path() / "frame.png";
+    OutputFile file(target);
+    file.write(std::string(3 * OutputFile::write_block / 2, 'p'));  // not held back: not bound
+    CHECK(fs::file_size(temporary_path(target)) == 3 * OutputFile::write_block / 2);
+    file.commit();
+    CHECK(fs::file_size(target) == 3 * OutputFile::write_block / 2);
   }
 
   TEST_CASE("a file destroyed before commit leaves nothing, not even its temporary") {

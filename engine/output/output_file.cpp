@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -85,6 +86,32 @@ OutputFile::~OutputFile() {
 }
 
 void OutputFile::write(std::string_view text) {
+  if (size_ == 0 && held_ == 0) {  // the first piece, maybe the whole file: as it is
+    hand_over(text);
+    return;
+  }
+  while (!text.empty()) {
+    const std::size_t to_boundary = write_block - (size_ + held_) % write_block;
+    if (held_ == 0 && text.size() >= to_boundary) {  // whole blocks straight from the text
+      const std::size_t whole =
+          to_boundary + (text.size() - to_boundary) / write_block * write_block;
+      hand_over(text.substr(0, whole));
+      text.remove_prefix(whole);
+      continue;
+    }
+    if (!block_) block_ = std::make_unique<char[]>(write_block);
+    const std::size_t taken = std::min(to_boundary, text.size());
+    std::memcpy(block_.get() + held_, text.data(), taken);
+    held_ += taken;
+    text.remove_prefix(taken);
+    if (taken == to_boundary) {  // the block is whole
+      hand_over({block_.get(), held_});
+      held_ = 0;
+    }
+  }
+}
+
+void OutputFile::hand_over(std::string_view text) {
   reserve_for(text.size());
   const char* next = text.data();
   std::size_t left = text.size();
@@ -116,6 +143,10 @@ void OutputFile::reserve_for(std::size_t size) {
 }
 
 void OutputFile::commit() {
+  if (held_ > 0) {
+    hand_over({block_.get(), held_});
+    held_ = 0;
+  }
   // The space reserved past the end is given back: the file holds what was written.
   if (reserved_ > size_ && ::ftruncate(descriptor_, static_cast<off_t>(size_)) != 0) {
     fail(std::strerror(errno));

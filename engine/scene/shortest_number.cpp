@@ -44,15 +44,10 @@ const WidePower& wide_power_of(int k) {
   return table[k - wide_k_min];
 }
 
-// ⌊x φ 2^−128⌋, and whether x φ 2^−128 is taken for whole: the 64 bits below the point are 0
-// (the product's lowest 64 bits are not computed; Dragonbox's proofs allow it).
-struct WideProduct {
-  u64 floor;
-  bool whole;
-};
-WideProduct multiply_high(u64 x, const WidePower& phi) {
+// ⌊x φ 2^−128⌋ (the product's lowest 64 bits are not computed; Dragonbox's proofs allow it).
+u64 multiply_high(u64 x, const WidePower& phi) {
   const u128 sum = u128{x} * phi.high + static_cast<u64>((u128{x} * phi.low) >> 64);
-  return {static_cast<u64>(sum >> 64), static_cast<u64>(sum) == 0};
+  return static_cast<u64>(sum >> 64);
 }
 
 // ⌊c g 2^−127⌋ rounded to odd (its lowest bit set if any bit below was): Schubfach's r_o.
@@ -86,31 +81,35 @@ Decimal without_trailing_zeros(Decimal d) {
 // multiple of 1000 (then the shortest), and at least one of 100. With β = q + ⌊log2 10^−m⌋
 // (6 … 9), the right end z = (2c + 1) 2^(q−1) 10^−m has ⌊z⌋ = ⌊((2c + 1) 2^β) φ(−m) 2^−128⌋
 // and ⌊δ⌋ = ⌊φ(−m) 2^(β−127)⌋ (Dragonbox's theorems: exact for every double). The cases where
-// the fractions decide — a multiple of 1000 at an excluded or the left end, v halfway
-// between two multiples of 100 or near it (one in about a hundred) — are left to the exact
-// method below: false, and nothing written.
+// the fractions decide — a multiple of 1000 at z or at the left end, v halfway between two
+// multiples of 100 or near it (about one in a hundred) — are left to the exact method below:
+// false, and nothing written.
 bool shortest_decimal_by_one_product(u64 c, int q, Decimal& d) {
   const int m = floor_log10_pow2(q) - 2;
   const WidePower& phi = wide_power_of(-m);
   const int beta = q + floor_log2_pow10(-m);
-  const u64 width = phi.high >> (63 - beta);                       // ⌊δ⌋
-  const WideProduct z = multiply_high(((c << 1) | 1) << beta, phi);  // ⌊z⌋
-  const u64 thousands = z.floor / 1000;
-  const u64 rest = z.floor - thousands * 1000;
-  if (rest < width) {  // 1000 ⌊z / 1000⌋ is in R_v, unless it is z itself and R_v is open
-    if (rest == 0 && z.whole && (c & 1) != 0) return false;
-    d = without_trailing_zeros({thousands, m + 3});
-    return true;
-  }
-  if (rest == width) return false;
-  // No multiple of 1000: the multiple of 100 nearest to v = z − δ/2, from (rest − δ/2 + 50) / 100,
-  // unless that is a whole number (v at or near halfway).
-  const u64 from_thousands = rest - width / 2 + 50;
+  const u64 width = phi.high >> (63 - beta);                 // ⌊δ⌋
+  const u64 z = multiply_high(((c << 1) | 1) << beta, phi);  // ⌊z⌋
+  const u64 thousands = z / 1000;
+  const u64 rest = z - thousands * 1000;
+  // 1000 ⌊z / 1000⌋ is in R_v when rest < ⌊δ⌋ (then the shortest), unless it is z itself
+  // (rest = 0: whether the right end is in R_v, the fraction decides). Else the multiple of
+  // 100 nearest to v = z − δ/2, from (rest − δ/2 + 50) / 100, unless that is a whole number (v
+  // at or near halfway). Which of the two it is, is a coin toss (δ/1000 is the chance of the
+  // first): both are made and one kept without a branch, which a branch predictor would miss
+  // half the time (docs/performance.md, "Traces"). The cases left to the exact method are
+  // tested for both at once (a few more than needed: one in a hundred of the first).
+  const u64 thousand_in = rest < width ? 1 : 0;
+  const u64 from_thousands = rest - width / 2 + 50;  // wraps around when thousand_in: unused
   const u64 hundreds = from_thousands / 100;
-  if (hundreds * 100 == from_thousands) return false;
-  d = {thousands * 10 + hundreds, m + 2};
+  if ((rest == 0) | (rest == width) | (hundreds * 100 == from_thousands)) return false;
+  const u64 hundred_mask = thousand_in - 1;  // all ones for the multiple of 100, else 0
+  d = without_trailing_zeros({thousands + ((thousands * 9 + hundreds) & hundred_mask),
+                              m + 3 - static_cast<int>(hundred_mask & 1)});
   return true;
 }
+
+Decimal shortest_decimal_exact(u64 c, int q);
 
 // The shortest decimal in R_v of v = c 2^q (normal, positive); of two, the nearer to v, and
 // of two as near, the one with an even last digit.
@@ -118,8 +117,13 @@ Decimal shortest_decimal(u64 c, int q) {
   if (q < 0 && q > -53 && ((c >> -q) << -q) == c) return without_trailing_zeros({c >> -q, 0});
   Decimal first_try{};
   if (c != (u64{1} << 52) && shortest_decimal_by_one_product(c, q, first_try)) return first_try;
-  // Schubfach's exact method (three products). 2^52 2^q has a closer neighbour below, unless
-  // it is the least normal double.
+  return shortest_decimal_exact(c, q);
+}
+
+// Schubfach's exact method (three products). 2^52 2^q has a closer neighbour below, unless it
+// is the least normal double. Out of line, as the whole numbers past 2^53 below: kept apart,
+// the rare cases leave the common one its registers.
+[[gnu::noinline, gnu::cold]] Decimal shortest_decimal_exact(u64 c, int q) {
   const bool regular = c != (u64{1} << 52) || q == -1074;
   const u64 open = c & 1;                     // R_v excludes its ends when c is odd
   const u64 cb = c << 2;                      // 4 v, and its interval's ends, in units of 2^q
@@ -250,7 +254,7 @@ class DigitText {
 
 // The digits of a whole v = c 2^q, q ≥ 0, below 10^24, at `out` (room for 32); returns
 // their end.
-char* write_whole_digits(char* out, u64 c, int q) {
+[[gnu::noinline, gnu::cold]] char* write_whole_digits(char* out, u64 c, int q) {
   constexpr u64 ten_to_16 = 10000000000000000u;
   const u128 v = u128{c} << q;
   if (v <= ~u64{0}) {
@@ -276,38 +280,39 @@ char* point_zero(char* out) {
 // "250", "12.5") unless scientific ("1e-05", "2.5e+21") is shorter, and with `float_form` an
 // integer's text with ".0" after it ("250.0"). Like std::to_chars, a whole v past 2^53 is
 // written with all its digits ("316070159402654208", not "316070159402654200"): fixed notation
-// is printf's %f.
+// is printf's %f. The lengths compared: fixed n + 1 ("12.5"), 2 − e ("0.001", e < 0 the
+// exponent of the last digit) or n + e ("250"); scientific n + 5 ("1.5e-03"), n + 4 for one
+// digit ("1e-03"), one more past 10^±99. The cases are told apart by branches that a trace's
+// records make predictable, most often the first two.
 // `out` has room for 42 characters (digits.copy after 17 digits and a point).
 char* write_decimal(char* out, Decimal d, u64 c, int q, bool float_form) {
   const int n = digit_count(d.digits);
   const DigitText digits(d.digits, n);
-  const int exponent10 = d.exponent + n - 1;  // of the first digit
-  const int magnitude = exponent10 < 0 ? -exponent10 : exponent10;
-  const int scientific_length = n + (n > 1 ? 1 : 0) + 2 + (magnitude >= 100 ? 3 : 2);
   const int point = n + d.exponent;  // digits before the decimal point
-  const int fixed_length = d.exponent >= 0 ? n + d.exponent : point > 0 ? n + 1 : 2 - d.exponent;
-  if (fixed_length <= scientific_length) {
-    if (d.exponent >= 0) {  // "250"
-      if (q > 0) {
-        out = write_whole_digits(out, c, q);
-      } else {
-        digits.copy(out);
-        std::memset(out + n, '0', static_cast<std::size_t>(d.exponent));
-        out += fixed_length;
-      }
-      return float_form ? point_zero(out) : out;
-    }
-    if (point > 0) {  // "12.5"
+  if (d.exponent < 0) {
+    if (point > 0) {  // "12.5": never longer than scientific
       digits.copy(out);
       digits.copy(out + point + 1, point);
       out[point] = '.';
-      return out + fixed_length;
+      return out + n + 1;
     }
-    // "0.001": fixed is as short as scientific only while −point ≤ 3 (2 − e ≤ n + 5)
-    std::memcpy(out, "0.000", 5);
-    digits.copy(out + 2 - point);
-    return out + fixed_length;
+    if (point >= (n > 1 ? -3 : -2)) {  // "0.001": 2 − e ≤ n + 5 (n + 4)
+      std::memcpy(out, "0.000", 5);
+      digits.copy(out + 2 - point);
+      return out + 2 - d.exponent;
+    }
+  } else if (d.exponent <= (n > 1 ? 5 : 4)) {  // "250": n + e ≤ n + 5 (n + 4)
+    if (q > 0) {
+      out = write_whole_digits(out, c, q);
+    } else {
+      digits.copy(out);
+      std::memset(out + n, '0', static_cast<std::size_t>(d.exponent));
+      out += point;
+    }
+    return float_form ? point_zero(out) : out;
   }
+  const int exponent10 = point - 1;  // of the first digit
+  const int magnitude = exponent10 < 0 ? -exponent10 : exponent10;
   digits.copy(out);  // "2.5e+21": the first digit, the point, the others
   out[1] = '.';
   digits.copy(out + 2, 1);

@@ -18,12 +18,13 @@ using Json = nlohmann::json;
 
 // The line is written directly, not built as a JSON tree: a 210-box pyramid writes about
 // 9 000 numbers a step, and trees made tracing several times slower than simulating. It goes
-// through a buffer of the writer's own, appended to `out` when full: appending each key, number
-// and bracket to `out` one by one cost 2.4 times the instructions (callgrind, 60 steps of the
-// pyramid: 248 M against 104 M, to_chars apart). Each record (a body, a contact, the line's
-// head) first makes room for the most it can write, and its pieces are then written without a
-// check each: the keys with their punctuation as literals of constant length ("," "\"point\":"),
-// the numbers, the names (a third of the writer's instructions went to those checks).
+// through a buffer of the writer's own, handed on when full (to a string, or to the trace's
+// file): appending each key, number and bracket to a string one by one cost 2.4 times the
+// instructions (callgrind, 60 steps of the pyramid: 248 M against 104 M, to_chars apart).
+// Each record (a body, a contact, the line's head) first makes room for the most it can write,
+// and its pieces are then written without a check each: the keys with their punctuation as
+// literals of constant length ("," "\"point\":"), the numbers, the names (a third of the
+// writer's instructions went to those checks).
 class LineWriter {
  public:
   // Names are copied whole up to this many characters; a longer one (or one to escape) is
@@ -33,7 +34,7 @@ class LineWriter {
   // (with the room write_shortest_float asks) and 3 names.
   static constexpr std::size_t record_room = 160 + 8 * shortest_float_length + 3 * (long_name + 2);
 
-  explicit LineWriter(std::string& out) : out_(out) {}
+  explicit LineWriter(const TextSink& put) : put_(put) {}
   LineWriter(const LineWriter&) = delete;
   LineWriter& operator=(const LineWriter&) = delete;
 
@@ -97,9 +98,9 @@ class LineWriter {
     put('"');
     make_room(record_room);  // the rest of the record, as its first make_room promised
   }
-  // Appends what the buffer holds to `out`; the line is whole there once this is called last.
+  // Hands on what the buffer holds; the line is whole once this is called last.
   void flush() {
-    out_.append(buffer_, end_);
+    put_(std::string_view(buffer_, static_cast<std::size_t>(end_ - buffer_)));
     end_ = buffer_;
   }
 
@@ -128,7 +129,7 @@ class LineWriter {
     *end_++ = c;
   }
 
-  std::string& out_;
+  const TextSink& put_;
   char buffer_[4096];      // the text written since the last flush, up to end_
   char* end_ = buffer_;
 };
@@ -194,7 +195,11 @@ std::string trace_json_line(const TraceStep& step) {
 }
 
 void append_trace_json_line(std::string& out, const TraceStep& step) {
-  LineWriter w(out);
+  write_trace_json_line([&out](std::string_view text) { out.append(text); }, step);
+}
+
+void write_trace_json_line(const TextSink& put, const TraceStep& step) {
+  LineWriter w(put);
   w.make_room(LineWriter::record_room);
   w.field(R"({"step":)", step.step);
   w.field(R"(,"time":)", step.time);

@@ -14,13 +14,13 @@ TraceWriter::TraceWriter(const std::filesystem::path& path) : csv_(path.extensio
 }
 
 void TraceWriter::write(const TraceStep& step) {
-  text_.clear();  // keeps its capacity: a pyramid's step is about 330 kB of text
   if (!csv_) {
-    append_trace_json_line(text_, step);
-    text_ += '\n';
-    files_[0]->write(text_);
+    OutputFile& file = *files_[0];
+    write_trace_json_line([&file](std::string_view text) { file.write(text); }, step);
+    file.write("\n");
     return;
   }
+  text_.clear();  // keeps its capacity: a pyramid's step is about 330 kB of text
   append_trace_csv_body_rows(text_, step);
   files_[0]->write(text_);
   text_.clear();

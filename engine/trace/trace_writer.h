@@ -31,7 +31,7 @@ class TraceWriter {
  private:
   bool csv_;                                   // CSV (two files) rather than JSON Lines (one)
   std::vector<std::unique_ptr<OutputFile>> files_;  // JSON Lines; or CSV bodies, CSV contacts
-  std::string text_;                           // the text of the step being written
+  std::string text_;                           // the text of a CSV step being written
 };
 
 // The contacts file of a CSV trace: "run.csv" → "run.contacts.csv".
