@@ -227,6 +227,39 @@ TEST_SUITE("Trace") {
     CHECK(parse_trace_line(line).bodies.at(0).name == name);
   }
 
+  TEST_CASE("every character JSON escapes is escaped wherever it stands in a name") {
+    // The writer copies a name whole and checks it in the same pass, escaping it only when it
+    // must: each character RFC 8259 asks to escape (the controls below 0x20, '"', '\\'), and
+    // the plain ones either side of them (0x20, '!', '#', '[', ']', 0x7f), at every place of
+    // names of 1 to 24 bytes among plain letters and Hangul (UTF-8's bytes of 0x80 and above,
+    // never escaped). Read back by nlohmann-json, an independent parser, exactly; a name with
+    // nothing to escape is copied as it is.
+    std::string specials;
+    for (int c = 0; c < 0x20; ++c) specials += static_cast<char>(c);
+    specials += "\"\\ !#[]\x7f";
+    const std::string fillers[] = {"abcdefghijklmnopqrstuvwx", "상자상자상자상자"};  // 24 bytes
+    int names = 0;
+    for (const std::string& filler : fillers) {
+      for (std::size_t length = 1; length <= 24; ++length) {
+        for (std::size_t at = 0; at < length; ++at) {
+          for (const char special : specials) {
+            std::string name = filler.substr(0, length);
+            name[at] = special;  // in Hangul, a byte of a character replaced: still one string
+            const TraceStep step{1, 0.5, {{name, {1.0, 2.0}, 0.0, {0.0, 0.0}, 0.0}}, {}};
+            const std::string line = trace_json_line(step);
+            const bool plain = static_cast<unsigned char>(special) >= 0x20 && special != '"' &&
+                               special != '\\';
+            CAPTURE(name);
+            if (filler == fillers[0]) CHECK(parse_trace_line(line).bodies.at(0).name == name);
+            CHECK((line.find("\"name\":\"" + name + "\"") != std::string::npos) == plain);
+            ++names;
+          }
+        }
+      }
+    }
+    CHECK(names == 2 * 300 * 40);  // places in names of 1 to 24 bytes, times 40 characters
+  }
+
   TEST_CASE("a JSON line of long names and many records reads back whole") {
     // The writer makes room once per record and writes its pieces unchecked: names longer than
     // it copies whole (256), names to escape, and lines of many buffers' worth (4096 bytes) must
