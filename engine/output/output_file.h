@@ -84,10 +84,10 @@ class OutputFile {
   // (docs/performance.md, "Traces"). Where the file system cannot reserve, files grow as before.
   static constexpr std::uint64_t reserve_block = std::uint64_t{32} << 20;
   // The pieces after the first are handed to the kernel in blocks of this size, each at an
-  // offset that is a multiple of it (the first block ends at one): the page cache then takes
-  // them in large, whole folios, and pyramid:20's trace costs the kernel a quarter less CPU
-  // time than in pieces of a step's 330 kB, the copy into the block included
-  // (docs/performance.md, "Traces"). A file written whole (a frame) is written as it is.
+  // offset that is a multiple of it (the first block ends at one): written so, pyramid:20's
+  // trace costs the kernel a quarter less CPU time than in pieces of a step's 330 kB, the copy
+  // into the block included (Linux 6.18 on ext4; docs/performance.md, "Traces"). A file
+  // written whole (a frame) is written as it is.
   static constexpr std::size_t write_block = std::size_t{1} << 20;
 
  private:
