@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <memory>
@@ -80,6 +81,15 @@ Image small_image() { return Image{2, 2, std::vector<std::uint8_t>(12, 200)}; }
 
 }  // namespace
 
+// A trace's path in a scratch folder, and the temporary it is written under.
+struct TraceTarget {
+  explicit TraceTarget(const std::string& folder)
+      : scratch(folder), path(scratch.path() / "trace.jsonl"), temporary(temporary_path(path)) {}
+  testing::ScratchFolder scratch;
+  fs::path path;
+  fs::path temporary;
+};
+
 TEST_SUITE("OutputFile") {
   TEST_CASE("an output folder that is a file is refused with one line naming it") {
     const testing::ScratchFolder scratch("safe-file");
@@ -131,17 +141,16 @@ TEST_SUITE("OutputFile") {
   }
 
   TEST_CASE("a file written in pieces has space reserved ahead of it, and none once committed") {
-    const testing::ScratchFolder scratch("output-reserve");
-    const fs::path target = scratch.path() / "trace.jsonl";
-    const fs::path temporary = temporary_path(target);
+    const TraceTarget trace("output-reserve");
+    const fs::path& temporary = trace.temporary;
     const std::string piece(100000, 'x');  // a third of a pyramid:20 trace's step
-    OutputFile file(target);
+    OutputFile file(trace.path);
     file.write(piece);
     // One piece reserves nothing (a frame, written whole, would not use it): 100 kB in 4 KiB
     // blocks, far below the 32 MiB a reservation takes.
     CHECK(allocated_bytes(temporary) < std::uint64_t{1} << 20);
     for (int k = 1; k < 12; ++k) file.write(piece);  // 1.2 MB: the first block handed over
-    if (can_reserve_in(scratch.path())) {
+    if (can_reserve_in(trace.scratch.path())) {
       CHECK(allocated_bytes(temporary) >= OutputFile::write_block + OutputFile::reserve_block);
     } else {
       MESSAGE("not checked: this file system reserves no space (the commit is still checked)");
@@ -149,11 +158,11 @@ TEST_SUITE("OutputFile") {
     file.commit();
     // The reservation given back: the 1.2 MB written and the rest of their last block (4 KiB on
     // ext4; 64 KiB allows any block size in use).
-    CHECK(fs::file_size(target) == 12 * piece.size());
-    CHECK(allocated_bytes(target) < 12 * piece.size() + 64 * 1024);
+    CHECK(fs::file_size(trace.path) == 12 * piece.size());
+    CHECK(allocated_bytes(trace.path) < 12 * piece.size() + 64 * 1024);
     std::string all;
     for (int k = 0; k < 12; ++k) all += piece;
-    CHECK(contents(target) == all);
+    CHECK(contents(trace.path) == all);
   }
 
   TEST_CASE("pieces after the first reach the file in whole blocks that end at block bounds") {
@@ -161,9 +170,8 @@ TEST_SUITE("OutputFile") {
     // it is (a file written whole is not held back); the others are gathered until the file
     // reaches a multiple of write_block, and a piece that spans blocks goes straight through,
     // up to the last bound it reaches; commit() hands over the rest.
-    const testing::ScratchFolder scratch("output-blocks");
-    const fs::path target = scratch.path() / "trace.jsonl";
-    const fs::path temporary = temporary_path(target);
+    const TraceTarget trace("output-blocks");
+    const fs::path& temporary = trace.temporary;
     const std::uint64_t block = OutputFile::write_block;
     std::string expected;
     const auto piece = [&expected](std::size_t size, char c) {
@@ -171,7 +179,7 @@ TEST_SUITE("OutputFile") {
       expected += text;
       return text;
     };
-    OutputFile file(target);
+    OutputFile file(trace.path);
     file.write(piece(100000, 'a'));
     CHECK(fs::file_size(temporary) == 100000);
     file.write(piece(300000, 'b'));
@@ -184,8 +192,31 @@ TEST_SUITE("OutputFile") {
     file.write(piece(10, 'f'));
     CHECK(fs::file_size(temporary) == 3 * block);
     file.commit();
-    CHECK(fs::file_size(target) == expected.size());
-    CHECK(contents(target) == expected);
+    CHECK(fs::file_size(trace.path) == expected.size());
+    CHECK(contents(trace.path) == expected);
+  }
+
+  TEST_CASE("text written in place reaches the file in the same blocks, pieces among it") {
+    // A trace's JSON lines are written straight into the file's block (room, wrote); the
+    // block is handed over whole at each bound, what was written past the bound kept for the
+    // next, and pieces written by write() between join the same text, in order.
+    const TraceTarget trace("output-in-place");
+    std::string expected;
+    OutputFile file(trace.path);
+    std::uint64_t written = 0;
+    for (int k = 0; k < 900; ++k) {  // 900 × (3001 + 1) bytes: 2.7 MB, two bounds passed
+      char* room = file.room(4096);
+      const std::string text(3001, static_cast<char>('a' + k % 26));
+      std::memcpy(room, text.data(), text.size());
+      file.wrote(text.size());
+      file.write("\n");
+      expected += text + "\n";
+      written += text.size() + 1;
+      CHECK(fs::file_size(trace.temporary) ==
+            written / OutputFile::write_block * OutputFile::write_block);
+    }
+    file.commit();
+    CHECK(contents(trace.path) == expected);
   }
 
   TEST_CASE("a file written whole is written as it is, in one piece") {

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -99,9 +100,8 @@ void OutputFile::write(std::string_view text) {
       text.remove_prefix(whole);
       continue;
     }
-    if (!block_) block_ = std::make_unique<char[]>(write_block);
     const std::size_t taken = std::min(to_boundary, text.size());
-    std::memcpy(block_.get() + held_, text.data(), taken);
+    std::memcpy(block() + held_, text.data(), taken);
     held_ += taken;
     text.remove_prefix(taken);
     if (taken == to_boundary) {  // the block is whole
@@ -109,6 +109,26 @@ void OutputFile::write(std::string_view text) {
       held_ = 0;
     }
   }
+}
+
+char* OutputFile::room(std::size_t size) {
+  assert(size <= room_limit);
+  (void)size;  // the block has room_limit bytes past its end: held_ is below write_block
+  return block() + held_;
+}
+
+void OutputFile::wrote(std::size_t size) {
+  held_ += size;
+  const std::size_t to_boundary = write_block - size_ % write_block;
+  if (held_ < to_boundary) return;
+  hand_over({block_.get(), to_boundary});  // the block up to the bound, whole
+  held_ -= to_boundary;
+  std::memmove(block_.get(), block_.get() + to_boundary, held_);  // what was written past it
+}
+
+char* OutputFile::block() {
+  if (!block_) block_ = std::make_unique<char[]>(write_block + room_limit);
+  return block_.get();
 }
 
 void OutputFile::hand_over(std::string_view text) {

@@ -71,6 +71,13 @@ class OutputFile {
   // A file written in more than one piece (a trace, a step at a time) has its disk space
   // reserved ahead of it, reserve_block bytes at a time (see below).
   void write(std::string_view text);
+  // Text written in place, for a writer that formats straight into the file: room for `size`
+  // bytes (at most room_limit) after what is written or gathered so far, in the block handed
+  // to the kernel (see below); wrote() then takes the first `size` of them, and the writer
+  // asks for room again before it writes more. Throws OutputError as write() does.
+  char* room(std::size_t size);
+  void wrote(std::size_t size);
+  static constexpr std::size_t room_limit = std::size_t{16} << 10;
   // Hands over what is gathered, closes the temporary file and renames it to the path. Throws
   // OutputError on failure, having removed the temporary file.
   void commit();
@@ -92,6 +99,7 @@ class OutputFile {
 
  private:
   void hand_over(std::string_view text);  // to the kernel, space reserved ahead
+  char* block();                          // block_, made on first use
   void reserve_for(std::size_t size);
   [[noreturn]] void fail(const std::string& why);
 
@@ -100,7 +108,7 @@ class OutputFile {
   std::uint64_t size_ = 0;        // bytes handed to the kernel
   std::uint64_t reserved_ = 0;    // the end of the space reserved, 0 while none is
   bool can_reserve_ = true;       // false once the file system has refused to reserve
-  std::unique_ptr<char[]> block_; // write_block bytes, made by the second piece
+  std::unique_ptr<char[]> block_; // write_block bytes and room_limit after them
   std::size_t held_ = 0;          // bytes gathered in block_, to follow the first size_
 };
 

@@ -18,9 +18,10 @@ using Json = nlohmann::json;
 
 // The line is written directly, not built as a JSON tree: a 210-box pyramid writes about
 // 9 000 numbers a step, and trees made tracing several times slower than simulating. It goes
-// through a buffer of the writer's own, handed on when full (to a string, or to the trace's
-// file): appending each key, number and bracket to a string one by one cost 2.4 times the
-// instructions (callgrind, 60 steps of the pyramid: 248 M against 104 M, to_chars apart).
+// into room of a few kilobytes its sink gives it (in a string, or in the trace's file's block),
+// asking for more when full: appending each key, number and bracket to a string one by one
+// cost 2.4 times the instructions (callgrind, 60 steps of the pyramid: 248 M against 104 M,
+// to_chars apart).
 // Each record (a body, a contact, the line's head) first makes room for the most it can write,
 // and its pieces are then written without a check each: the keys with their punctuation as
 // literals of constant length ("," "\"point\":"), the numbers, the names (a third of the
@@ -34,13 +35,16 @@ class LineWriter {
   // (with the room write_shortest_float asks) and 3 names.
   static constexpr std::size_t record_room = 160 + 8 * shortest_float_length + 3 * (long_name + 2);
 
-  explicit LineWriter(const TextSink& put) : put_(put) {}
+  explicit LineWriter(TextSink& sink) : sink_(sink) { take_room(); }
   LineWriter(const LineWriter&) = delete;
   LineWriter& operator=(const LineWriter&) = delete;
 
   // Room for a record: what follows, up to the next call, is written without checks.
   void make_room(std::size_t size) {
-    if (static_cast<std::size_t>(buffer_ + sizeof buffer_ - end_) < size) flush();
+    if (static_cast<std::size_t>(limit_ - end_) < size) {
+      hand_on();
+      take_room();
+    }
   }
   // Text of a length known at compile time: a key with its punctuation, a bracket.
   template <std::size_t size>
@@ -98,11 +102,8 @@ class LineWriter {
     put('"');
     make_room(record_room);  // the rest of the record, as its first make_room promised
   }
-  // Hands on what the buffer holds; the line is whole once this is called last.
-  void flush() {
-    put_(std::string_view(buffer_, static_cast<std::size_t>(end_ - buffer_)));
-    end_ = buffer_;
-  }
+  // Hands on what is written; the line is whole once this is called last.
+  void hand_on() { sink_.wrote(static_cast<std::size_t>(end_ - begin_)); }
 
  private:
   // Copies s after the opening quote's place and says whether it has nothing to escape: no '"',
@@ -129,11 +130,35 @@ class LineWriter {
     *end_++ = c;
   }
 
-  const TextSink& put_;
-  char buffer_[4096];      // the text written since the last flush, up to end_
-  char* end_ = buffer_;
+  void take_room() {
+    begin_ = end_ = sink_.room(TextSink::room_limit);
+    limit_ = begin_ + TextSink::room_limit;
+  }
+
+  TextSink& sink_;
+  char* begin_ = nullptr;  // the room the sink gave: text from begin_ to end_, room to limit_
+  char* end_ = nullptr;
+  char* limit_ = nullptr;
 };
-static_assert(LineWriter::record_room < 4096, "a record fits the buffer");
+static_assert(LineWriter::record_room < TextSink::room_limit, "a record fits the room");
+
+// A string as a sink: grown by the room asked for, cut back to what was written.
+class StringSink : public TextSink {
+ public:
+  explicit StringSink(std::string& out) : out_(out), used_(out.size()) {}
+  char* room(std::size_t size) override {
+    out_.resize(used_ + size);
+    return out_.data() + used_;
+  }
+  void wrote(std::size_t size) override {
+    used_ += size;
+    out_.resize(used_);
+  }
+
+ private:
+  std::string& out_;
+  std::size_t used_;  // the string's text; room after it
+};
 
 void write_body(LineWriter& w, const BodyState& b) {
   w.field(R"({"name":)", b.name);
@@ -195,11 +220,12 @@ std::string trace_json_line(const TraceStep& step) {
 }
 
 void append_trace_json_line(std::string& out, const TraceStep& step) {
-  write_trace_json_line([&out](std::string_view text) { out.append(text); }, step);
+  StringSink sink(out);
+  write_trace_json_line(sink, step);
 }
 
-void write_trace_json_line(const TextSink& put, const TraceStep& step) {
-  LineWriter w(put);
+void write_trace_json_line(TextSink& sink, const TraceStep& step) {
+  LineWriter w(sink);
   w.make_room(LineWriter::record_room);
   w.field(R"({"step":)", step.step);
   w.field(R"(,"time":)", step.time);
@@ -210,7 +236,7 @@ void write_trace_json_line(const TextSink& put, const TraceStep& step) {
   write_list(w, step.contacts, write_contact);
   w.make_room(LineWriter::record_room);
   w.literal("]}");
-  w.flush();
+  w.hand_on();
 }
 
 TraceStep parse_trace_line(const std::string& line) {

@@ -8,9 +8,8 @@
 //                 "normal_impulse":0.08,"tangent_impulse":0.0,"cached":true,"origin":"kept"}]}
 #pragma once
 
-#include <functional>
+#include <cstddef>
 #include <string>
-#include <string_view>
 
 #include "trace/trace.h"
 
@@ -20,11 +19,21 @@ namespace lamina {
 std::string trace_json_line(const TraceStep& step);
 // The same line appended to `out`, so that a writer reuses one buffer step after step.
 void append_trace_json_line(std::string& out, const TraceStep& step);
-// Where a line's text goes, a few kilobytes at a time, in order.
-using TextSink = std::function<void(std::string_view)>;
-// The same line handed to `put` piece by piece as it is written: a trace's file takes it
-// without a copy of the whole line in between (a third of a megabyte a step on pyramid:20).
-void write_trace_json_line(const TextSink& put, const TraceStep& step);
+// Where a line's text goes, written in place: the writer asks for room, writes into it and
+// says how much it wrote, a few kilobytes at a time, in order. A trace's file gives room in
+// the block it hands to the kernel (output/output_file.h): its text is written where it goes,
+// never copied (a third of a megabyte a step on pyramid:20).
+class TextSink {
+ public:
+  virtual ~TextSink() = default;
+  // At least `size` bytes (at most room_limit) to write into, after what was written before.
+  virtual char* room(std::size_t size) = 0;
+  // The first `size` bytes of the last room given hold text now.
+  virtual void wrote(std::size_t size) = 0;
+  static constexpr std::size_t room_limit = 4096;
+};
+// The same line written into `sink`.
+void write_trace_json_line(TextSink& sink, const TraceStep& step);
 
 // A line of a JSON Lines trace read back. Throws std::invalid_argument for anything else.
 TraceStep parse_trace_line(const std::string& line);

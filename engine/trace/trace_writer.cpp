@@ -4,6 +4,21 @@
 #include "trace/trace_json.h"
 
 namespace lamina {
+namespace {
+
+// A trace's file as the sink of its JSON lines: the text written in the file's block.
+static_assert(TextSink::room_limit <= OutputFile::room_limit, "the file gives the room asked");
+class FileSink : public TextSink {
+ public:
+  explicit FileSink(OutputFile& file) : file_(file) {}
+  char* room(std::size_t size) override { return file_.room(size); }
+  void wrote(std::size_t size) override { file_.wrote(size); }
+
+ private:
+  OutputFile& file_;
+};
+
+}  // namespace
 
 TraceWriter::TraceWriter(const std::filesystem::path& path) : csv_(path.extension() == ".csv") {
   files_.push_back(std::make_unique<OutputFile>(path));
@@ -15,9 +30,9 @@ TraceWriter::TraceWriter(const std::filesystem::path& path) : csv_(path.extensio
 
 void TraceWriter::write(const TraceStep& step) {
   if (!csv_) {
-    OutputFile& file = *files_[0];
-    write_trace_json_line([&file](std::string_view text) { file.write(text); }, step);
-    file.write("\n");
+    FileSink sink(*files_[0]);
+    write_trace_json_line(sink, step);
+    files_[0]->write("\n");
     return;
   }
   text_.clear();  // keeps its capacity: a pyramid's step is about 330 kB of text
