@@ -215,13 +215,9 @@ ContactState contact_state(const Json& j) {
 
 std::string trace_json_line(const TraceStep& step) {
   std::string line;
-  append_trace_json_line(line, step);
-  return line;
-}
-
-void append_trace_json_line(std::string& out, const TraceStep& step) {
-  StringSink sink(out);
+  StringSink sink(line);
   write_trace_json_line(sink, step);
+  return line;
 }
 
 void write_trace_json_line(TextSink& sink, const TraceStep& step) {

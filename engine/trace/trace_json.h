@@ -17,8 +17,6 @@ namespace lamina {
 
 // The step as one line of JSON, without the line break.
 std::string trace_json_line(const TraceStep& step);
-// The same line appended to `out`, so that a writer reuses one buffer step after step.
-void append_trace_json_line(std::string& out, const TraceStep& step);
 // Where a line's text goes, written in place: the writer asks for room, writes into it and
 // says how much it wrote, a few kilobytes at a time, in order. A trace's file gives room in
 // the block it hands to the kernel (output/output_file.h): its text is written where it goes,
