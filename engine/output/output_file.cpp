@@ -92,38 +92,33 @@ void OutputFile::write(std::string_view text) {
     return;
   }
   while (!text.empty()) {
-    const std::size_t to_boundary = write_block - (size_ + held_) % write_block;
-    if (held_ == 0 && text.size() >= to_boundary) {  // whole blocks straight from the text
-      const std::size_t whole =
-          to_boundary + (text.size() - to_boundary) / write_block * write_block;
+    const std::size_t to_gather = to_bound() - held_;  // for the block to be whole
+    if (held_ == 0 && text.size() >= to_gather) {  // whole blocks straight from the text
+      const std::size_t whole = to_gather + (text.size() - to_gather) / write_block * write_block;
       hand_over(text.substr(0, whole));
       text.remove_prefix(whole);
       continue;
     }
-    const std::size_t taken = std::min(to_boundary, text.size());
-    std::memcpy(block() + held_, text.data(), taken);
-    held_ += taken;
+    const std::size_t taken = std::min(to_gather, text.size());
+    std::memcpy(room(taken), text.data(), taken);
     text.remove_prefix(taken);
-    if (taken == to_boundary) {  // the block is whole
-      hand_over({block_.get(), held_});
-      held_ = 0;
-    }
+    wrote(taken);
   }
 }
 
 char* OutputFile::room(std::size_t size) {
   assert(size <= room_limit);
-  (void)size;  // the block has room_limit bytes past its end: held_ is below write_block
+  (void)size;  // the block has room_limit bytes past its end: held_ is below to_bound()
   return block() + held_;
 }
 
 void OutputFile::wrote(std::size_t size) {
   held_ += size;
-  const std::size_t to_boundary = write_block - size_ % write_block;
-  if (held_ < to_boundary) return;
-  hand_over({block_.get(), to_boundary});  // the block up to the bound, whole
-  held_ -= to_boundary;
-  std::memmove(block_.get(), block_.get() + to_boundary, held_);  // what was written past it
+  const std::size_t whole = to_bound();
+  if (held_ < whole) return;
+  hand_over({block_.get(), whole});  // the block up to the bound
+  held_ -= whole;
+  std::memmove(block_.get(), block_.get() + whole, held_);  // what was written past it
 }
 
 char* OutputFile::block() {

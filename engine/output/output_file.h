@@ -99,6 +99,8 @@ class OutputFile {
 
  private:
   void hand_over(std::string_view text);  // to the kernel, space reserved ahead
+  // Bytes from what the kernel has to the next multiple of write_block, where a block ends.
+  std::size_t to_bound() const { return write_block - size_ % write_block; }
   char* block();                          // block_, made on first use
   void reserve_for(std::size_t size);
   [[noreturn]] void fail(const std::string& why);
