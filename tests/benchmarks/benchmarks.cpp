@@ -68,13 +68,15 @@ void lamina_islands_pyramid(benchmark::State& state) {
 
 // Lamina's `pgs` at Box2D's sweeps on two threads (issue 19): range(0) bodies in the base. Each
 // repetition runs the pyramid on one thread and then on two, right after measuring the round
-// trip of a cache line between the cores (cross_core.h): the speed-up is each pair's, both
-// sides of it on the machine as it was then.
+// trip of a cache line between the cores and how fast each core runs one thread of pyramid:20
+// (cross_core.h): the speed-up is each pair's, both sides of it on the machine as it was then.
 void lamina_pyramid_two_threads(benchmark::State& state) {
   const int base = static_cast<int>(state.range(0));
   for (auto _ : state) {
     ThreadPair pair;
     pair.round_trip_ns = cross_core_round_trip_ns();
+    pair.first_cpu_ratio = first_cpu_time_ratio(
+        [] { return run_lamina_pyramid(PyramidShape::boxes, 20, 8, "pgs", 1).ms_per_step; });
     pair.one = run_lamina_pyramid(PyramidShape::boxes, base, 8, "pgs", 1);
     pair.two = run_lamina_pyramid(PyramidShape::boxes, base, 8, "pgs", 2);
     record(state, {"Lamina 2 threads", base, 8}, pair.two);

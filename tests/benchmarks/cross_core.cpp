@@ -3,6 +3,7 @@
 #include <pthread.h>
 #include <sched.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <thread>
@@ -62,6 +63,19 @@ std::optional<double> cross_core_round_trip_ns(long round_trips) {
   other.join();
   pthread_setaffinity_np(pthread_self(), sizeof before, &before);
   return took.count() / static_cast<double>(round_trips);
+}
+
+std::optional<double> first_cpu_time_ratio(const std::function<double()>& work) {
+  int cpus[2];
+  if (allowed_cpus(2, cpus) < 2) return std::nullopt;
+  std::array<double, 2> took{};  // per CPU, the sum of its two runs' times
+  const cpu_set_t before = pin_to(cpus[0]);
+  for (const int k : {0, 1, 1, 0}) {
+    pin_to(cpus[k]);
+    took[static_cast<std::size_t>(k)] += work();
+  }
+  pthread_setaffinity_np(pthread_self(), sizeof before, &before);
+  return took[0] / took[1];
 }
 
 }  // namespace lamina

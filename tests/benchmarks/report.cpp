@@ -53,10 +53,15 @@ std::string standing_cells(const PyramidRun& run) {
          (run.standing() ? "yes" : "no");
 }
 
-// "0.833 (0.753–0.855)": the median CPU ms per step and the fastest and slowest repetitions.
-std::string ms_cells(const Summary& s) {
-  return fixed(s.ms, 3) + " (" + fixed(s.ms_min, 3) + "–" + fixed(s.ms_max, 3) + ")";
+// "0.833 (0.753–0.855)", "1.62× (1.34–1.82)": a middle value with `unit`, and a range, each with
+// `digits` decimals.
+std::string with_range(double middle, double low, double high, int digits,
+                       const std::string& unit = "") {
+  return fixed(middle, digits) + unit + " (" + fixed(low, digits) + "–" + fixed(high, digits) + ")";
 }
+
+// The median CPU ms per step and the fastest and slowest repetitions.
+std::string ms_cells(const Summary& s) { return with_range(s.ms, s.ms_min, s.ms_max, 3); }
 
 // "0.83× — met" or "1.12× — missed by 0.12 (12 %)" against a bar.
 std::string against(double ratio, double bar) {
@@ -135,16 +140,25 @@ std::string peers_table(const Measurements& m) {
 // while the benchmarks run; the pairs are told apart at this round trip, between the two.
 constexpr double near_cores_ns = 300.0;
 
+// The median of some values and their range (with_range).
+std::string median_and_range(const std::vector<double>& values, int digits,
+                             const std::string& unit = "") {
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  return with_range(median(values), *low, *high, digits, unit);
+}
+
 // Issue 19's two threads: wall-clock time per step of `pgs` at 8 / 3 on one thread and on two
 // (the CPU time of the stepping thread leaves out the other's work), run in pairs; the speed-up
-// is the median of the pairs' own, beside the cores' round trip measured before each pair.
+// is the median of the pairs' own, beside the cores' round trip and their one-thread speeds
+// measured before each pair.
 std::string threads_table(const Measurements& m) {
   std::ostringstream out;
   out << "| pyramid | one thread, wall ms per step | two threads, wall ms per step | speed-up, "
          "median (range) of the pairs | a cache line between the cores and back, ns, median "
          "(range) | speed-up with the cores near (round trip < "
       << near_cores_ns << " ns): pairs, median | with the cores far: pairs, median "
-         "|\n|---|---|---|---|---|---|---|\n";
+         "| one thread's time on the first CPU ÷ on the second, median (range) "
+         "|\n|---|---|---|---|---|---|---|---|\n";
   std::ostringstream verdicts;
   for (const auto& [base, pairs] : m.thread_pairs) {
     if (pairs.empty()) continue;
@@ -152,38 +166,41 @@ std::string threads_table(const Measurements& m) {
     std::vector<double> two;
     std::vector<double> speed_ups;
     std::vector<double> round_trips;
+    std::vector<double> cpu_ratios;
     std::array<std::vector<double>, 2> by_distance;  // the speed-ups with the cores near, far
     for (const ThreadPair& pair : pairs) {
       one.push_back(pair.one.wall_ms_per_step);
       two.push_back(pair.two.wall_ms_per_step);
       speed_ups.push_back(pair.one.wall_ms_per_step / pair.two.wall_ms_per_step);
+      if (pair.first_cpu_ratio) cpu_ratios.push_back(*pair.first_cpu_ratio);
       if (!pair.round_trip_ns) continue;
       round_trips.push_back(*pair.round_trip_ns);
       by_distance[*pair.round_trip_ns < near_cores_ns ? 0 : 1].push_back(speed_ups.back());
     }
     const double speed_up = median(speed_ups);
-    const auto [fewest, most] = std::minmax_element(speed_ups.begin(), speed_ups.end());
     out << "| " << base << " | " << fixed(median(one), 3) << " | " << fixed(median(two), 3) << " | "
-        << fixed(speed_up, 2) << "× (" << fixed(*fewest, 2) << "–" << fixed(*most, 2) << ") | ";
+        << median_and_range(speed_ups, 2, "×") << " | ";
     if (round_trips.empty()) {
-      out << "– (one CPU) | – | – |\n";
+      out << "– (one CPU) | – | – |";
     } else {
-      const auto [low, high] = std::minmax_element(round_trips.begin(), round_trips.end());
-      out << fixed(median(round_trips), 0) << " (" << fixed(*low, 0) << "–" << fixed(*high, 0)
-          << ") |";
+      out << median_and_range(round_trips, 0) << " |";
       for (const std::vector<double>& group : by_distance) {
         out << " " << group.size();
         if (!group.empty()) out << ", " << fixed(median(group), 2) << "×";
         out << " |";
       }
-      out << "\n";
     }
+    out << " " << (cpu_ratios.empty() ? "–" : median_and_range(cpu_ratios, 2)) << " |\n";
     verdicts << "- base " << base << ": speed-up " << fixed(speed_up, 2) << "× "
              << (speed_up >= 1.7 ? "≥ 1.7: met" : "< 1.7: missed") << ".\n";
   }
   out << "\nEach repetition runs the pyramid on one thread, then on two, right after timing a cache "
-         "line's round trip between the two cores; medians of the repetitions. The same state bit "
-         "for bit on both (tests/test_threads.cpp). The verdicts take every pair.\n"
+         "line's round trip between the two cores and one thread of pyramid:20 (`pgs`, 8 / 3) "
+         "pinned to each core; medians of the repetitions. Every piece of the two-thread step is "
+         "cut into equal halves, so it goes at the pace of the slower core: with one core r "
+         "times slower than the other, against one thread on the faster core the speed-up is at "
+         "most about 2 ÷ r. The same state bit for bit on both (tests/test_threads.cpp). The "
+         "verdicts take every pair.\n"
       << verdicts.str();
   return out.str();
 }
