@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "contact/contact_cache.h"
 #include "parallel/workers.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
@@ -288,6 +289,81 @@ TEST_SUITE("Threads") {
         two.step();
       }
       CHECK(state_bytes(two) == state_bytes(one));
+    }
+  }
+
+  TEST_CASE("the contact cache's merge cut by its new pairs when they outnumber the kept ones") {
+    // The merge's runs cut the longer of the cached pairs and the fresh collisions into equal
+    // shares and the other list at the same pairs. With the cache off every pair is new on every
+    // step (cut by the fresh collisions); with it on, the first step's are (the cache empty) and
+    // the later steps' mostly kept (cut by the cached pairs). Either way each pair is merged
+    // once, in its run, and the state is the one-thread state bit for bit: 60 steps of
+    // pyramid:20 on 1, 2 and 3 threads.
+    for (const bool cache : {false, true}) {
+      CAPTURE(cache);
+      std::vector<std::vector<unsigned char>> states;
+      for (const int threads : {1, 2, 3}) {
+        Scene scene = builtin_scene("pyramid:20");
+        scene.solver = "pgs";
+        WorldSettings settings = world_settings(scene);
+        settings.threads = threads;
+        settings.cache.enabled = cache;
+        World world = build_world(scene, settings);
+        for (int k = 0; k < 60; ++k) world.step();
+        states.push_back(state_bytes(world));
+      }
+      CHECK(states[1] == states[0]);
+      CHECK(states[2] == states[0]);
+    }
+  }
+
+  TEST_CASE("the cache's merge on threads: new pairs among kept ones, the runs cut at kept ones") {
+    // 24 boxes on a ground box, every third pair kept from a first update ((0, 1), (0, 4), …),
+    // then all 24 found again: the fresh collisions outnumber the kept pairs, so the runs cut
+    // the fresh list into equal shares (of 24 in 4 runs on 2 threads: at (0, 7), (0, 13),
+    // (0, 19), each a kept pair) and the kept pairs at the same pairs. Each kept pair must be
+    // merged with its own fresh collision, in one run: the same pairs, in the same order, with
+    // the same contacts as one thread's merge (a kept pair cut from its collision would be kept
+    // twice, once with its old point and once as a new pair).
+    constexpr int boxes = 24;
+    std::vector<Shape> shapes{Shape::box(50.0, 0.5)};
+    std::vector<Pose2> poses{Pose2{Vec2(0.0, -0.5)}};
+    std::vector<FreshCollision> all;
+    std::vector<FreshCollision> every_third;
+    for (int i = 1; i <= boxes; ++i) {
+      shapes.push_back(Shape::box(0.5, 0.5));
+      poses.push_back(Pose2{Vec2(1.5 * i, 0.5)});
+      Collision touch;
+      touch.point = Vec2(1.5 * i - 0.5, 0.0);
+      all.push_back({BodyPair{0, i}, touch});
+      if (i % 3 == 1) every_third.push_back(all.back());
+    }
+    const std::vector<Material> materials(shapes.size());
+    ContactCache kept;
+    kept.update(every_third, {}, poses, shapes, materials, CacheSettings{});
+    REQUIRE(kept.pairs().size() == every_third.size());
+    // the boxes moved a little to the right: a kept point and a new one are told apart
+    for (std::size_t b = 1; b < poses.size(); ++b) poses[b].x.x() += 0.01;
+    for (FreshCollision& f : all) f.collision.point.x() += 0.01;
+    ContactCache one = kept;
+    one.update(all, {}, poses, shapes, materials, CacheSettings{});
+    REQUIRE(one.pairs().size() == all.size());
+    for (const int threads : {2, 3}) {
+      CAPTURE(threads);
+      Workers workers(threads);
+      ContactCache team = kept;
+      team.update(all, {}, poses, shapes, materials, CacheSettings{}, &workers);
+      REQUIRE(team.pairs().size() == one.pairs().size());
+      for (std::size_t k = 0; k < one.pairs().size(); ++k) {
+        const ContactPair& a = one.pairs()[k];
+        const ContactPair& b = team.pairs()[k];
+        CHECK(b.bodies == a.bodies);
+        REQUIRE(b.count == a.count);
+        for (int c = 0; c < a.count; ++c) {
+          CHECK(b.contacts[c].point == a.contacts[c].point);
+          CHECK(b.contacts[c].origin == a.contacts[c].origin);
+        }
+      }
     }
   }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "kinematics/require.h"
 
@@ -135,27 +136,49 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh,
                           const std::vector<Pose2>& poses,
                           const std::vector<Shape>& shapes, const std::vector<Material>& materials,
                           const CacheSettings& settings, Workers* workers) {
-  if (!settings.enabled) pairs_.clear();
+  // With the cache off no pair is kept: the first `kept` of pairs_ are merged, none of them.
+  // (Cleared instead, pairs_ would come back as next_ empty, and the join below would make
+  // every pair anew before copying into it.)
+  const std::size_t kept = settings.enabled ? pairs_.size() : 0;
   // Each run of the workers takes a run of the cached pairs and the fresh collisions of the
-  // same bodies (both sorted by pair), and keeps its pairs in order; the runs are joined in order.
-  if (pairs_.empty()) workers = nullptr;  // nothing to cut: the fresh collisions alone
+  // same bodies (both sorted by pair), and keeps its pairs in order; the runs are joined in
+  // order. The longer of the two lists is cut into equal shares and the other at the same
+  // pairs, so that a step whose pairs are mostly new (the first, the cache empty; every step
+  // with the cache off) is cut as evenly as one whose pairs are mostly cached.
   const int runs = runs_on(workers);
+  const bool by_cached = kept >= fresh.size();
+  // where run t starts in each list: at its share of the longer, and at the first of the other
+  // from the same pair on (the first run: at 0; after the last run: at the ends)
+  const auto run_start = [&](int t) -> std::pair<std::size_t, std::size_t> {
+    if (t == 0) return {0, 0};
+    if (t == runs) return {kept, fresh.size()};
+    if (by_cached) {
+      const std::size_t cached = share_of(kept, t, runs).first;
+      if (cached == kept) return {cached, fresh.size()};
+      const auto found = std::lower_bound(
+          fresh.begin(), fresh.end(), pairs_[cached].bodies,
+          [](const FreshCollision& f, const BodyPair& b) { return f.bodies < b; });
+      return {cached, static_cast<std::size_t>(found - fresh.begin())};
+    }
+    const std::size_t found = share_of(fresh.size(), t, runs).first;
+    if (found == fresh.size()) return {kept, found};
+    const auto cached = std::lower_bound(
+        pairs_.begin(), pairs_.begin() + static_cast<std::ptrdiff_t>(kept), fresh[found].bodies,
+        [](const ContactPair& c, const BodyPair& b) { return c.bodies < b; });
+    return {static_cast<std::size_t>(cached - pairs_.begin()), found};
+  };
   next_of_run_.resize(runs);
   const auto update_run = [&](int t) {
-    const auto [first, last] = share_of(pairs_.size(), t, runs);
-    // the fresh collisions from this run's first pair (the first run: from the start) to the
-    // next run's first pair (the last run: to the end)
-    const auto fresh_from = [&](std::size_t cached_index, bool to_end) {
-      if (to_end || cached_index >= pairs_.size()) return fresh.end();
-      return std::lower_bound(fresh.begin(), fresh.end(), pairs_[cached_index].bodies,
-                              [](const FreshCollision& f, const BodyPair& b) { return f.bodies < b; });
-    };
+    const auto [first, first_found] = run_start(t);
+    const auto [last, last_found] = run_start(t + 1);
     std::vector<ContactPair>& next = runs == 1 ? next_ : next_of_run_[t];
     next.clear();
-    merge_run(pairs_.begin() + first, pairs_.begin() + last,
-              recycled.empty() ? nullptr : recycled.data() + first,
-              t == 0 ? fresh.begin() : fresh_from(first, false), fresh_from(last, t == runs - 1),
-              poses, shapes, materials, settings, next);
+    const auto at = [](const auto& list, std::size_t i) {
+      return list.begin() + static_cast<std::ptrdiff_t>(i);
+    };
+    merge_run(at(pairs_, first), at(pairs_, last),
+              recycled.empty() ? nullptr : recycled.data() + first, at(fresh, first_found),
+              at(fresh, last_found), poses, shapes, materials, settings, next);
   };
   run_on(workers, update_run);
   if (runs > 1) join_runs(next_of_run_, next_, workers);
