@@ -136,9 +136,9 @@ void ContactCache::update(const std::vector<FreshCollision>& fresh,
                           const std::vector<Pose2>& poses,
                           const std::vector<Shape>& shapes, const std::vector<Material>& materials,
                           const CacheSettings& settings, Workers* workers) {
-  // With the cache off no pair is kept: the first `kept` of pairs_ are merged, none of them.
-  // (Cleared instead, pairs_ would come back as next_ empty, and the join below would make
-  // every pair anew before copying into it.)
+  // The cached pairs the merge takes: all of pairs_, or none with the cache off. (Cleared
+  // instead, pairs_ would come back as next_ empty, and the join below would make every pair
+  // anew before copying into it.)
   const std::size_t kept = settings.enabled ? pairs_.size() : 0;
   // Each run of the workers takes a run of the cached pairs and the fresh collisions of the
   // same bodies (both sorted by pair), and keeps its pairs in order; the runs are joined in
