@@ -26,10 +26,10 @@ struct RunKey {
 
 // One repetition of the two-thread benchmark: the same pyramid on one thread, then on two.
 struct ThreadPair {
-  std::optional<double> round_trip_ns;  // a cache line between the cores and back, just before
+  std::optional<double> round_trip_ns;    // a cache line between the cores and back, just before
   std::optional<double> first_cpu_ratio;  // one thread's pyramid:20, first CPU ÷ second, before
-  PyramidRun one;                       // on one thread
-  PyramidRun two;                       // on two threads
+  PyramidRun one;                         // on one thread
+  PyramidRun two;                         // on two threads
 };
 
 struct Measurements {
