@@ -124,19 +124,29 @@ void World::advance(WorldReport* report) {
     report->time = time_;
     report->bodies = bodies_;
   }
+  PhaseClock clock(step_times_);
   apply_forces();          // 1
+  clock.lap(StepPhase::forces);
   detect_collisions();     // 2
+  clock.lap(StepPhase::collision);
   update_cache();          // 3
+  clock.lap(StepPhase::cache);
   build_rows();            // 4
+  clock.lap(StepPhase::rows);
   if (method_) {
     take_method_step(report);  // 5–7, chapter 6's way
+    clock.lap(StepPhase::solve);
   } else {
     solve(report);             // 5, and 6. eq. 3-11, 5-9: F_c = Jᵀ λ
+    clock.lap(StepPhase::solve);
     // 7. eq. 2-1..2-8 under F_ext + F_c, with split impulse's push-out
     integrate_with_push_out(bodies_, split_impulse_.push_out(), settings_.step.dt,
                             settings_.step.pitfalls, workers_.get());
+    clock.lap(StepPhase::integrate);
   }
   find_non_finite_body();
+  clock.lap(StepPhase::checks);
+  ++step_times_.steps;
   time_ += settings_.step.dt;
   steps_taken_in_process.fetch_add(1, std::memory_order_relaxed);
 }

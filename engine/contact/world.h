@@ -34,6 +34,7 @@
 #include "contact/contact_cache.h"
 #include "contact/contact_rows.h"
 #include "contact/split_impulse.h"
+#include "contact/step_times.h"
 #include "contact/world_report.h"
 
 namespace lamina {
@@ -93,6 +94,8 @@ class World {
   // Steps taken by all the Worlds of this process so far: how a test sees that a program
   // simulated its run once (tests/cli/test_cli_simulation.cpp).
   static long steps_in_process();
+  // The wall-clock time of each phase of the steps taken so far (step_times.h).
+  const StepTimes& step_times() const { return step_times_; }
 
   const WorldSettings& settings() const { return settings_; }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
@@ -135,6 +138,7 @@ class World {
   WorldSettings settings_;
   double time_ = 0.0;                  // t, in s
   std::optional<std::size_t> first_non_finite_body_;  // after the last step
+  StepTimes step_times_;               // each phase's time, summed over the steps taken
   std::vector<RigidBody> bodies_;      // the bodies, in the order they were added
   std::vector<Shape> shapes_;          // bodies_[i]'s shape
   std::vector<Material> materials_;    // bodies_[i]'s friction and restitution

@@ -198,7 +198,8 @@ int main(int argc, char** argv) {
     measurements.load_after = load_average();
     const Tables tables = make_tables(measurements);
     for (const char* name :
-         {"machine", "pyramids", "peers", "threads", "scaling", "warm_start", "hexagons", "traces"}) {
+         {"machine", "pyramids", "peers", "threads", "profile", "scaling", "warm_start", "hexagons",
+          "traces"}) {
       std::cout << "\n" << tables.at(name);
     }
     if (!report.empty()) write_tables(tables, report);

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/step_times.h"
 #include "scene/scene.h"
 
 namespace lamina {
@@ -47,6 +48,7 @@ struct PyramidRun {
   int position_iterations = 0;    // sweeps of the position solve
   double apex_shift = 0.0;        // |apex(10 s) − apex(0)|, in m
   double largest_sideways = 0.0;  // max over bodies of |x(10 s) − x(0)|, in m
+  StepTimes phases;               // Lamina's: each phase's wall-clock time over the timed steps
 
   bool standing() const { return apex_shift <= apex_bar && largest_sideways <= sideways_bar; }
   // The step's time spread over every row of every sweep, in µs: linear growth keeps it flat.

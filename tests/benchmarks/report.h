@@ -41,8 +41,8 @@ struct Measurements {
   std::string load_after;                               // and when they ended
 };
 
-// Named tables: "machine", "pyramids", "peers", "threads", "scaling", "warm_start", "hexagons",
-// "traces" (Markdown), and the CSV files "pyramids.csv", "scaling.csv", "warm_start.csv",
+// Named tables: "machine", "pyramids", "peers", "threads", "profile", "scaling", "warm_start",
+// "hexagons", "traces" (Markdown), and the CSV files "pyramids.csv", "scaling.csv", "warm_start.csv",
 // "hexagons.csv".
 using Tables = std::map<std::string, std::string>;
 Tables make_tables(const Measurements& measurements);
