@@ -105,6 +105,11 @@ void add_run_options(CLI::App& run, RunOptions& o, std::string& explain_format) 
                                "and stop; writes no file")
                       ->type_name("STEP")->check(range_of(scene_limits::steps))
                       ->excludes(trace)->excludes(frames)->excludes(viewer);
+  run.add_flag("--profile", o.profile,
+               "after the run, print where the World's steps spent their time, phase by phase of "
+               "the chapter-5 walk-through (wall clock, the steps after the first; "
+               "docs/performance.md)")
+      ->excludes(explain);
   run.add_option("--explain-format", explain_format, "text or json")
       ->type_name("FORMAT")->capture_default_str()->check(CLI::IsMember({"text", "json"}))->needs(explain);
 }

@@ -199,6 +199,34 @@ void print_summary(const Simulation& simulation, const std::optional<TraceWriter
   std::cout << '\n';
 }
 
+// `text` and spaces after it to `width` characters (UTF-8: a character counted once), or with
+// the spaces before it.
+std::string padded(const std::string& text, std::size_t width, bool before = false) {
+  std::size_t characters = 0;
+  for (const unsigned char c : text) characters += (c & 0xC0) != 0x80 ? 1 : 0;
+  const std::string spaces(width > characters ? width - characters : 0, ' ');
+  return before ? spaces + text : text + spaces;
+}
+
+// --profile: each phase's wall-clock µs a step and share of the step, over the steps after the
+// first (Simulation::times_after_first), e.g. "  5–6. solve, F_c = Jᵀλ     101.5 µs  46.5 %".
+void print_profile(const Simulation& simulation) {
+  const StepTimes times = simulation.times_after_first();
+  if (times.steps == 0) return;
+  const long first = simulation.steps_taken() - times.steps;
+  std::cout << simulation.scene().name << ": where the World's steps " << first << ".."
+            << simulation.steps_taken() - 1 << " spent their time (wall clock, a step):\n";
+  const double total = times.total();
+  const auto line = [&](const std::string& name, double seconds) {
+    const double us = 1e6 * seconds / static_cast<double>(times.steps);
+    const double share = total > 0.0 ? 100.0 * seconds / total : 0.0;
+    std::cout << "  " << padded(name, 24) << padded(tutorial::fixed(us, 1), 10, true) << " µs"
+              << padded(tutorial::fixed(share, 1), 7, true) << " %\n";
+  };
+  for (int p = 0; p < step_phase_count; ++p) line(phase_name(StepPhase(p)), times.seconds[p]);
+  line("whole step", total);
+}
+
 // What a run that stopped keeps, complete: "; trace -> t.jsonl holds steps 0..411, 103 frames
 // -> out".
 std::string kept_outputs(const Simulation& simulation, const RunOptions& o,
@@ -289,6 +317,7 @@ void run_scene(Scene scene, const RunOptions& o) {
   }
   progress.finish();
   print_summary(simulation, trace, o, frames, kept_viewer);
+  if (o.profile) print_profile(simulation);
 }
 
 }  // namespace lamina::cli

@@ -23,6 +23,7 @@ struct RunOptions {
   std::optional<std::string> solver;            // --solver NAME (else the scene's)
   std::vector<std::string> pitfalls;            // --pitfall NAME, each (motion/pitfalls.h)
   bool no_cache = false;                        // --no-cache
+  bool profile = false;                         // --profile
   int threads = 1;                              // --threads N: threads per step, same bits
   std::optional<std::filesystem::path> trace;   // --trace FILE
   std::optional<std::filesystem::path> frames;  // --frames DIR
