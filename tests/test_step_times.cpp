@@ -36,7 +36,8 @@ TEST_CASE("a World's phases are timed, and add up to its steps' time") {
   const StepTimes& times = world.step_times();
   CHECK(times.steps == 30);
   // each phase works on the 55 boxes or their contacts every step: never no time at all (the
-  // steady clock counts nanoseconds; the shortest phase, F_ext on 55 bodies, takes hundreds)
+  // steady clock counts nanoseconds; the shortest phase, F_ext = m g on 55 bodies, takes about
+  // a hundred)
   for (const StepPhase phase : every_phase) {
     INFO(phase_name(phase));
     CHECK(times.of(phase) > 0.0);

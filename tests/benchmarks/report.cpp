@@ -222,8 +222,10 @@ std::string profile_table(const Measurements& m) {
   }
   const std::vector<ThreadPair>* pairs = nullptr;
   int pairs_base = 0;
-  for (const auto& [base, of_base] : m.thread_pairs) {
-    if (!of_base.empty()) std::tie(pairs_base, pairs) = std::make_pair(base, &of_base);
+  for (const auto& [base, of_base] : m.thread_pairs) {  // by base: the last is the largest
+    if (of_base.empty()) continue;
+    pairs_base = base;
+    pairs = &of_base;
   }
   std::ostringstream out;
   out << "| phase of the step |";
