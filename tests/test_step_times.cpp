@@ -1,8 +1,9 @@
 // A World's times of its phases (contact/step_times.h): every phase of a pyramid's step is
-// timed, the phases add up to the steps' wall-clock time, a chapter-6 method's steps 5–7 count
-// as one phase, and `since` leaves the steps before out. Times are the machine's, so the checks
-// are of what must hold on any machine: a phase that does work takes time, and the phases lie
-// inside the steps.
+// timed, the phases add up to the steps' wall-clock time, a chapter-6 method's steps 5–7 count as
+// one phase, and `since` and `step_times_after_first` leave the steps before out. Times are the
+// machine's, so the checks are of what must hold on any machine: a phase that does work takes
+// time, the phases lie inside the steps, and the sums of some steps are those of all less those
+// of the steps before, exactly.
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -64,4 +65,22 @@ TEST_CASE("a chapter-6 method's steps 5 to 7 are one phase, and since() leaves e
     CHECK(later.of(phase) <= world.step_times().of(phase));
   }
   CHECK(later.total() < world.step_times().total());  // the first 10 steps' time is left out
+}
+
+TEST_CASE("step_times_after_first leaves the first step out, and is the first alone") {
+  World world = pyramid_world("pgs");
+  world.step();
+  const StepTimes first = world.step_times();
+  // one step: nothing after it to show, so the first step itself (exactly its sums)
+  CHECK(world.step_times_after_first().steps == 1);
+  CHECK(world.step_times_after_first().total() == first.total());
+  for (int k = 0; k < 9; ++k) world.step();
+  const StepTimes after = world.step_times_after_first();
+  CHECK(after.steps == 9);
+  // the sums of steps 1..9 are the sums of steps 0..9 less step 0's, phase by phase, exactly as
+  // since() subtracts them
+  for (const StepPhase phase : every_phase) {
+    INFO(phase_name(phase));
+    CHECK(after.of(phase) == world.step_times().since(first).of(phase));
+  }
 }

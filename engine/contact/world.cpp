@@ -117,6 +117,10 @@ void World::step() { advance(nullptr); }
 
 void World::step(WorldReport& report) { advance(&report); }
 
+StepTimes World::step_times_after_first() const {
+  return step_times_.steps > 1 ? step_times_.since(first_step_times_) : step_times_;
+}
+
 void World::advance(WorldReport* report) {
   const Workers::Awake awake(workers_.get());  // the threads wait spinning between the phases
   if (report != nullptr) {
@@ -146,7 +150,7 @@ void World::advance(WorldReport* report) {
   }
   find_non_finite_body();
   clock.lap(StepPhase::checks);
-  ++step_times_.steps;
+  if (++step_times_.steps == 1) first_step_times_ = step_times_;
   time_ += settings_.step.dt;
   steps_taken_in_process.fetch_add(1, std::memory_order_relaxed);
 }

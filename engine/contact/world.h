@@ -96,6 +96,9 @@ class World {
   static long steps_in_process();
   // The wall-clock time of each phase of the steps taken so far (step_times.h).
   const StepTimes& step_times() const { return step_times_; }
+  // The same over the steps after the first, which does one-off work (every buffer grows to the
+  // scene's size); over the first when it is the only one.
+  StepTimes step_times_after_first() const;
 
   const WorldSettings& settings() const { return settings_; }
   const std::vector<RigidBody>& bodies() const { return bodies_; }
@@ -139,6 +142,7 @@ class World {
   double time_ = 0.0;                  // t, in s
   std::optional<std::size_t> first_non_finite_body_;  // after the last step
   StepTimes step_times_;               // each phase's time, summed over the steps taken
+  StepTimes first_step_times_;         // step_times_ after the first step
   std::vector<RigidBody> bodies_;      // the bodies, in the order they were added
   std::vector<Shape> shapes_;          // bodies_[i]'s shape
   std::vector<Material> materials_;    // bodies_[i]'s friction and restitution

@@ -98,13 +98,8 @@ PyramidRun run_lamina_pyramid(PyramidShape shape, int base, int iterations,
     for (const RigidBody& body : world.bodies()) p.push_back({body.x.x(), body.x.y()});
     return p;
   };
-  StepTimes after_first;  // the phases' times of the first step, which is not timed
-  const auto step = [&] {
-    world.step();
-    if (world.step_times().steps == 1) after_first = world.step_times();
-  };
   const auto count_rows = [&](PyramidRun& run) {
-    run.phases = world.step_times().since(after_first);  // called right after the timed steps
+    run.phases = world.step_times_after_first();  // called right after the timed steps
     for (const ContactPair& pair : world.contact_pairs()) {
       run.contact_points += pair.count;
       run.velocity_rows += pair.rows.count;  // its contact and friction rows (the row map)
@@ -113,7 +108,7 @@ PyramidRun run_lamina_pyramid(PyramidShape shape, int base, int iterations,
     run.velocity_iterations = settings.step.iterations;
     run.position_iterations = settings.position_iterations;
   };
-  return measure_pyramid_run(scene, step, where, count_rows);
+  return measure_pyramid_run(scene, [&] { world.step(); }, where, count_rows);
 }
 
 PyramidRun run_box2d_pyramid(PyramidShape shape, int base) {

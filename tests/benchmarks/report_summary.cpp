@@ -54,4 +54,15 @@ std::string fixed(double value, int digits) {
   return text;
 }
 
+std::string with_range(double middle, double low, double high, int digits,
+                       const std::string& unit) {
+  return fixed(middle, digits) + unit + " (" + fixed(low, digits) + "–" + fixed(high, digits) + ")";
+}
+
+std::string median_and_range(const std::vector<double>& values, int digits,
+                             const std::string& unit) {
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  return with_range(median(values), *low, *high, digits, unit);
+}
+
 }  // namespace lamina::report

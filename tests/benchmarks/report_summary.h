@@ -44,5 +44,12 @@ double median(std::vector<double> values);
 
 // `value` with `digits` decimals: "0.833".
 std::string fixed(double value, int digits);
+// "0.833 (0.753–0.855)", "1.62× (1.34–1.82)": a middle value with `unit`, and a range, each with
+// `digits` decimals.
+std::string with_range(double middle, double low, double high, int digits,
+                       const std::string& unit = "");
+// The median of some values and their range (with_range).
+std::string median_and_range(const std::vector<double>& values, int digits,
+                             const std::string& unit = "");
 
 }  // namespace lamina::report

@@ -209,9 +209,9 @@ std::string padded(const std::string& text, std::size_t width, bool before = fal
 }
 
 // --profile: each phase's wall-clock µs a step and share of the step, over the steps after the
-// first (Simulation::times_after_first), e.g. "  5–6. solve, F_c = Jᵀλ     101.5 µs  46.5 %".
+// first (World::step_times_after_first), e.g. "  5–6. solve, F_c = Jᵀλ     101.5 µs  46.5 %".
 void print_profile(const Simulation& simulation) {
-  const StepTimes times = simulation.times_after_first();
+  const StepTimes times = simulation.world().step_times_after_first();
   if (times.steps == 0) return;
   const long first = simulation.steps_taken() - times.steps;
   std::cout << simulation.scene().name << ": where the World's steps " << first << ".."

@@ -66,17 +66,12 @@ void Simulation::step(WorldReport* report) {
     world_.step();
   }
   throw_if_diverged();
-  if (steps_taken_ == 0) after_first_ = world_.step_times();
   if (trace_ != nullptr) {
     trace_step(scene_, world_, steps_taken_, record_);
     trace_->write(record_);
   }
   ++steps_taken_;
   if (progress_ != nullptr) progress_->advance();
-}
-
-StepTimes Simulation::times_after_first() const {
-  return steps_taken_ > 1 ? world_.step_times().since(after_first_) : world_.step_times();
 }
 
 void Simulation::throw_if_diverged() const {

@@ -32,9 +32,6 @@ class Simulation {
   const World& world() const { return world_; }
   const std::string& origin() const { return origin_; }
   long steps_taken() const { return steps_taken_; }
-  // The World's times of its phases over the steps after the first, which does one-off work
-  // (every buffer grows to the scene's size); over the first when it is the only one.
-  StepTimes times_after_first() const;
   // The scene's body names, in the World's order.
   std::vector<std::string> body_names() const;
 
@@ -45,7 +42,6 @@ class Simulation {
   std::string origin_;                 // the SCENE argument, which messages name
   World world_;
   long steps_taken_ = 0;
-  StepTimes after_first_;              // the World's step times after step 0
   TraceWriter* trace_ = nullptr;       // where steps go, if anywhere
   TraceStep record_;                   // the step being written to trace_, refilled each step
   ProgressBar* progress_ = nullptr;    // the bar that counts steps, if any
