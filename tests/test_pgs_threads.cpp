@@ -1,12 +1,12 @@
-// PGS's sweeps on threads and in lanes (issue 19, pgs_solver.h): λ of an MLCP swept on 2 and 3
-// threads, or in two lanes on one, must be one thread's row-by-row λ bit for bit — from a warm
-// start and from λ = 0, with the parts' plan kept or made again, with rows in no order of place
-// (then the sweeps stay on one thread) and with rows whose lanes both wait on other threads;
-// and two MLCPs swept side by side, each to the λ it has when solved alone.
+// PGS's sweeps on threads (issue 19, pgs_solver.h): λ of an MLCP swept on 2 and 3 threads must
+// be one thread's λ bit for bit — from a warm start and from λ = 0, with rows in no order of
+// place (then the sweeps stay on one thread) and with rows whose lanes both wait on other
+// threads; F_c = Jᵀ λ added in the last sweep must be Mlcp::add_constraint_forces's; and two
+// MLCPs swept side by side, each to the λ it has when solved alone. The lanes of one thread:
+// test_pgs_lanes.cpp.
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <cstring>
 #include <memory>
 #include <random>
 #include <vector>
@@ -15,42 +15,11 @@
 #include "parallel/workers.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
+#include "support/pgs_support.h"
 
 using namespace lamina;
 
 namespace {
-
-// The bytes of a vector of doubles: equal bytes, equal bits (−0 and +0, and NaNs, told apart).
-std::vector<unsigned char> bytes_of(const double* values, std::size_t count) {
-  std::vector<unsigned char> bytes(count * sizeof(double));
-  if (count > 0) std::memcpy(bytes.data(), values, bytes.size());
-  return bytes;
-}
-
-// A step of pyramid:20 after `steps` steps, reported: its velocity MLCP (1700-odd rows) and warm
-// start, and its position MLCP, solved from λ = 0.
-WorldReport pyramid_report(int steps, Scene scene = builtin_scene("pyramid:20")) {
-  scene.solver = "pgs";
-  World world = build_world(scene, world_settings(scene));
-  for (int k = 0; k < steps; ++k) world.step();
-  WorldReport report;
-  world.step(report);
-  return report;
-}
-// Its velocity MLCP and warm start.
-StepReport pyramid_mlcp(int steps, Scene scene = builtin_scene("pyramid:20")) {
-  return pyramid_report(steps, std::move(scene)).velocity;
-}
-
-// λ after `sweeps` sweeps from the report's warm start, by `solver`.
-std::vector<unsigned char> solved(PgsSolver& solver, const StepReport& step, int sweeps,
-                                  Pitfalls pitfalls = {}) {
-  std::vector<double> lambda(step.lambda_exp.data(),
-                             step.lambda_exp.data() + step.lambda_exp.size());
-  SweepResult result;
-  solver.solve(step.mlcp, lambda.data(), {sweeps, 0.0, false}, result, pitfalls);
-  return bytes_of(lambda.data(), lambda.size());
-}
 
 // λ after `sweeps` sweeps by a solver given a team of `threads`, and whether it swept on them.
 struct OnThreads {
@@ -122,7 +91,7 @@ TEST_SUITE("PGS on threads") {
     // MLCP's F_c alone), and where the sweeps do not run in parts (recorded: added after them).
     // The forces start from values with bits below gravity's, so that a sum taken in another
     // order, a term added twice or one left out shows; the out-of-plane components stay 0.
-    const WorldReport report = pyramid_report(60);
+    const WorldReport report = report_after(60);
     const StepReport& velocity = report.velocity;
     REQUIRE(velocity.mlcp.row_count() >= 1000);
     std::vector<RigidBody> start = report.bodies;
@@ -192,7 +161,7 @@ TEST_SUITE("PGS on threads") {
     std::swap(swapped.bodies[40], swapped.bodies[120]);
     for (const int which : {0, 1, 2, 3}) {
       const WorldReport report =
-          which == 3 ? pyramid_report(10, swapped) : pyramid_report(which == 0 ? 3 : 60);
+          which == 3 ? report_after(10, swapped) : report_after(which == 0 ? 3 : 60);
       const StepReport& velocity = report.velocity;
       StepReport position = report.position;
       REQUIRE(position.mlcp.row_count() >= 512);  // enough rows to be swept in parts
@@ -228,7 +197,7 @@ TEST_SUITE("PGS on threads") {
     // The threads' order keeps every body's sequence of updates (pgs_solver.h): λ must be
     // identical, not close. Two moments of the pyramid: early (landing) and settled.
     for (const int steps : {3, 60}) {
-      const StepReport step = pyramid_mlcp(steps);
+      const StepReport step = mlcp_after(steps);
       REQUIRE(step.mlcp.row_count() >= 1000);
       PgsSolver one;
       const std::vector<unsigned char> expected = solved(one, step, 8);
@@ -255,7 +224,7 @@ TEST_SUITE("PGS on threads") {
     // makes a = B λ (it adds nothing). λ must be one thread's bit for bit; so must it from a λ
     // that is zero but for one row (near the end: the pass is needed) and from the velocity
     // MLCP's λ all zero.
-    const WorldReport report = pyramid_report(60);
+    const WorldReport report = report_after(60);
     StepReport position = report.position;
     REQUIRE(position.mlcp.row_count() >= 1000);
     REQUIRE(position.lambda_exp.isZero(0.0));
@@ -279,72 +248,6 @@ TEST_SUITE("PGS on threads") {
     }
   }
 
-  TEST_CASE("PGS swept in two lanes on one thread gives the row-by-row sweeps' λ bit for bit") {
-    // The lanes keep every body's sequence of updates, as the threads do (pgs_solver.h): λ must
-    // be identical to the plain sweep's, row after row. Recording the sweeps forces the plain
-    // sweep (it measures the residual after each), and recording never changes λ.
-    for (const int steps : {3, 60}) {
-      const StepReport step = pyramid_mlcp(steps);
-      REQUIRE(step.mlcp.row_count() >= 1000);
-      for (const int sweeps : {2, 3, 8}) {
-        for (const bool clamped : {false, true}) {
-          CAPTURE(steps);
-          CAPTURE(sweeps);
-          CAPTURE(clamped);
-          Pitfalls pitfalls;
-          if (clamped) pitfalls.add(Pitfall::clamp_increment);
-          PgsSolver row_by_row;
-          std::vector<double> expected(step.lambda_exp.data(),
-                                       step.lambda_exp.data() + step.lambda_exp.size());
-          SweepResult recorded;
-          row_by_row.solve(step.mlcp, expected.data(), {sweeps, 0.0, true}, recorded, pitfalls);
-          CHECK_FALSE(row_by_row.swept_in_lanes());
-          PgsSolver lanes;
-          CHECK(solved(lanes, step, sweeps, pitfalls) ==
-                bytes_of(expected.data(), expected.size()));
-          CHECK(lanes.swept_in_lanes());  // the lanes did sweep: the check can fail
-        }
-      }
-    }
-  }
-
-  TEST_CASE("a kept plan serves MLCPs whose groups are on the same bodies, and no others") {
-    // A solver keeps the last two plans it made (part_plan.h). In its first step the same
-    // pyramid with two boxes swapped in the list has as many groups and rows (the same boxes
-    // touch), only other bodies in them: its plan must be made again. A step's position MLCP
-    // (the contact rows alone, other rows in each group, the same bodies) and the settled
-    // pyramid's (other rows: pairs with one point or two) are served by the plan of the same
-    // bodies. Each λ must be a fresh solver's bit for bit.
-    const WorldReport first = pyramid_report(0);
-    const StepReport& placed = first.velocity;
-    Scene swapped_scene = builtin_scene("pyramid:20");
-    std::swap(swapped_scene.bodies[10], swapped_scene.bodies[100]);
-    const StepReport swapped = pyramid_mlcp(0, swapped_scene);
-    REQUIRE(swapped.mlcp.groups().size() == placed.mlcp.groups().size());
-    REQUIRE(swapped.mlcp.row_count() == placed.mlcp.row_count());
-    Scene twice_swapped_scene = swapped_scene;
-    std::swap(twice_swapped_scene.bodies[20], twice_swapped_scene.bodies[150]);
-    const StepReport twice_swapped = pyramid_mlcp(0, twice_swapped_scene);
-    const StepReport settled = pyramid_mlcp(60);
-    REQUIRE(settled.mlcp.row_count() != placed.mlcp.row_count());
-    REQUIRE(first.position.mlcp.row_count() < placed.mlcp.row_count());
-    PgsSolver kept;
-    const auto solve_kept = [&](const StepReport& step, long plans_made) {
-      PgsSolver fresh;
-      CHECK(solved(kept, step, 8) == solved(fresh, step, 8));
-      CHECK(kept.swept_in_lanes());  // the plan was used: the checks can fail
-      CHECK(kept.plans_made() == plans_made);
-    };
-    solve_kept(placed, 1);
-    solve_kept(first.position, 1);  // served by the velocity MLCP's plan
-    solve_kept(placed, 1);
-    solve_kept(swapped, 2);  // the same sizes, other bodies: made again
-    solve_kept(placed, 2);  // the plan before it, kept beside it
-    solve_kept(settled, 2);  // other rows, the same bodies
-    solve_kept(twice_swapped, 3);  // made again, in place of the older (swapped's)
-    solve_kept(swapped, 4);  // no longer among the last two
-  }
-
   TEST_CASE("rows in no order of place are swept on one thread, to the same λ") {
     // The pyramid's boxes listed in a shuffled order: a box's rows then share bodies with rows
     // all over the order, the threads would wait at nearly every group, and the solver keeps to
@@ -353,7 +256,7 @@ TEST_SUITE("PGS on threads") {
     std::mt19937 rng(19);
     // the ground stays first
     std::shuffle(shuffled.bodies.begin() + 1, shuffled.bodies.end(), rng);
-    const StepReport step = pyramid_mlcp(30, shuffled);
+    const StepReport step = mlcp_after(30, shuffled);
     REQUIRE(step.mlcp.row_count() >= 1000);
     const OnThreads on_threads = solved_on_threads(2, step, 8);
     PgsSolver one;
@@ -375,7 +278,7 @@ TEST_SUITE("PGS on threads") {
         std::mt19937 rng(seed);
         std::uniform_int_distribution<std::size_t> box(1, scene.bodies.size() - 1);
         for (int k = 0; k < swaps; ++k) std::swap(scene.bodies[box(rng)], scene.bodies[box(rng)]);
-        const StepReport step = pyramid_mlcp(10, scene);
+        const StepReport step = mlcp_after(10, scene);
         PgsSolver one;
         const std::vector<unsigned char> expected = solved(one, step, 8);
         for (const int threads : {2, 3}) {

@@ -15,10 +15,6 @@ bool all_zero(const double* lambda, int count) {
   return std::all_of(lambda, lambda + count, [](double l) { return l == 0.0; });
 }
 
-// The rows are swept in parts (threads, lanes) when there are a few hundred rows, and when the
-// parts seldom wait on each other (PartPlan::usable).
-constexpr int threaded_min_rows = 512;
-
 // The pitfall lambda-b1: the text's TransposeMultiply as written, scaling row i's blocks by
 // λ[b1] and λ[b2], λ indexed by body instead of by row. Where a body index is past the rows the
 // text reads beyond λ; here it wraps round to row b mod s, so the slip stays a wrong number and
@@ -57,7 +53,9 @@ void PgsSolver::use_workers(Workers* workers) {
 }
 
 bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {
-  if (mlcp.row_count() < threaded_min_rows || !mlcp.friction_on_own_bodies()) return false;
+  // two parts: two lanes on the calling thread; more: two a thread (runs_on)
+  const int min_rows = parts > 2 ? threads_min_rows : lanes_min_rows;
+  if (mlcp.row_count() < min_rows || !mlcp.friction_on_own_bodies()) return false;
   // a plan kept for the MLCPs solved before, if one serves, the last used first (a step's
   // position MLCP is served by its velocity MLCP's plan, just made or used), else a new one in
   // place of the older

@@ -147,6 +147,13 @@ class PgsSolver {
   bool swept_side_by_side() const { return swept_side_by_side_; }
   // Whether the last solve swept on one thread in two lanes (above).
   bool swept_in_lanes() const { return swept_in_lanes_; }
+  // The rows an MLCP needs to be swept in parts (and then only when they seldom wait on each
+  // other: PartPlan::usable): on threads, whose hand-overs take microseconds, and in two lanes on
+  // one thread, which cost a plan and a few instructions a group. Below 48 rows the lanes gained
+  // nothing (vertical-stack:12 and :14, 36 and 42 rows); from 48 they took 10–26 % off the solve
+  // (vertical-stack:16 and :20, 48 and 60 rows; pyramid:10, 399: docs/performance.md).
+  static constexpr int threads_min_rows = 512;
+  static constexpr int lanes_min_rows = 48;
   // How many times a plan of the parts has been made (PartPlan): once per MLCP that neither of
   // the last two plans serves (its groups on other bodies).
   long plans_made() const { return plans_made_; }
