@@ -7,8 +7,13 @@ namespace {
 
 // For each cut between two parts, at most one group in max_wait_share may wait on another part
 // (a pyramid of base 20 in 2 parts: one in 20); otherwise the parts would mostly wait on each
-// other.
-constexpr int max_wait_share = 8;
+// other. Threads' parts (more than two, two a thread) hand each waited-for body from core to
+// core; one thread's two lanes (two parts) only go one at a time while one waits, and are worth
+// more waits: a honeycomb of 55 hexagons (hexagon-pyramid), about one wait in four, sweeps
+// 17–20 % faster in lanes, while a pile of capsules (capsule-pile), more than one in four, sweeps
+// 12 % slower (docs/performance.md).
+constexpr int max_wait_share_threads = 8;
+constexpr int max_wait_share_lanes = 4;
 
 }  // namespace
 
@@ -113,7 +118,8 @@ bool PartPlan::make(const Mlcp& mlcp, int parts) {
   }
   // rows whose bodies are spread over the whole order (bodies added in no spatial order) would
   // make the parts wait at every few groups: then one part is faster
-  usable_ = waits <= static_cast<long>(parts - 1) * group_count / max_wait_share;
+  const int share = parts == 2 ? max_wait_share_lanes : max_wait_share_threads;
+  usable_ = waits <= static_cast<long>(parts - 1) * group_count / share;
   return usable_;
 }
 
