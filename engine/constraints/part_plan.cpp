@@ -9,9 +9,9 @@ namespace {
 // (a pyramid of base 20 in 2 parts: one in 20); otherwise the parts would mostly wait on each
 // other. Threads' parts (more than two, two a thread) hand each waited-for body from core to
 // core; one thread's two lanes (two parts) only go one at a time while one waits, and are worth
-// more waits: a honeycomb of 55 hexagons (hexagon-pyramid), about one wait in four, sweeps
-// 17–20 % faster in lanes, while a pile of capsules (capsule-pile), more than one in four, sweeps
-// 12 % slower (docs/performance.md).
+// more waits: a honeycomb of 55 hexagons (hexagon-pyramid), about one group in five waiting,
+// sweeps 17–20 % faster in lanes, while a pile of capsules (capsule-pile), more than one in four,
+// sweeps 12 % slower (docs/performance.md).
 constexpr int max_wait_share_threads = 8;
 constexpr int max_wait_share_lanes = 4;
 
