@@ -118,7 +118,7 @@ bool PartPlan::make(const Mlcp& mlcp, int parts) {
   }
   // rows whose bodies are spread over the whole order (bodies added in no spatial order) would
   // make the parts wait at every few groups: then one part is faster
-  const int share = parts == 2 ? max_wait_share_lanes : max_wait_share_threads;
+  const int share = lanes_of_one_thread(parts) ? max_wait_share_lanes : max_wait_share_threads;
   usable_ = waits <= static_cast<long>(parts - 1) * group_count / share;
   return usable_;
 }

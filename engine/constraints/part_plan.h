@@ -15,6 +15,11 @@
 
 namespace lamina {
 
+// Whether a plan of `parts` parts is one thread's two lanes: on threads each thread takes two
+// parts (runs_on), four or more. The lanes need fewer rows and bear more waits than threads,
+// whose hand-overs cross cores (PgsSolver::lanes_min_rows, part_plan.cpp).
+inline bool lanes_of_one_thread(int parts) { return parts == 2; }
+
 class PartPlan {
  public:
   // Where the part (thread or lane) of a group waits before its pass k over it, for each of its

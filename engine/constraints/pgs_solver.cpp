@@ -53,8 +53,7 @@ void PgsSolver::use_workers(Workers* workers) {
 }
 
 bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {
-  // two parts: two lanes on the calling thread; more: two a thread (runs_on)
-  const int min_rows = parts > 2 ? threads_min_rows : lanes_min_rows;
+  const int min_rows = lanes_of_one_thread(parts) ? lanes_min_rows : threads_min_rows;
   if (mlcp.row_count() < min_rows || !mlcp.friction_on_own_bodies()) return false;
   // a plan kept for the MLCPs solved before, if one serves, the last used first (a step's
   // position MLCP is served by its velocity MLCP's plan, just made or used), else a new one in

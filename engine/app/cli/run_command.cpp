@@ -14,6 +14,7 @@
 #include "app/harness/viewer.h"
 #include "app/views/contact/world_explanation.h"
 #include "motion/pitfalls.h"
+#include "render/utf8.h"
 #include "parallel/workers.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
@@ -199,11 +200,10 @@ void print_summary(const Simulation& simulation, const std::optional<TraceWriter
   std::cout << '\n';
 }
 
-// `text` and spaces after it to `width` characters (UTF-8: a character counted once), or with
+// `text` and spaces after it to `width` characters (its code points, render/utf8.h), or with
 // the spaces before it.
 std::string padded(const std::string& text, std::size_t width, bool before = false) {
-  std::size_t characters = 0;
-  for (const unsigned char c : text) characters += (c & 0xC0) != 0x80 ? 1 : 0;
+  const std::size_t characters = render::decode_utf8(text).size();
   const std::string spaces(width > characters ? width - characters : 0, ' ');
   return before ? spaces + text : text + spaces;
 }
