@@ -30,12 +30,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
+#include "support/world_state.h"
 
 using namespace lamina;
 
@@ -69,22 +69,6 @@ const Golden golden[] = {
     {"pyramid:10", "islands", 0x478636405dfc2cfd},
 };
 
-// The raw bytes of every body's x, q (x, y, z, w), v and ω, in body order.
-std::vector<unsigned char> state_bytes(const World& world) {
-  std::vector<unsigned char> bytes;
-  const auto append = [&bytes](const double* values, int count) {
-    const auto* first = reinterpret_cast<const unsigned char*>(values);
-    bytes.insert(bytes.end(), first, first + count * sizeof(double));
-  };
-  for (const RigidBody& b : world.bodies()) {
-    append(b.x.data(), 3);
-    append(b.q.coeffs().data(), 4);
-    append(b.v.data(), 3);
-    append(b.angular_velocity.data(), 3);
-  }
-  return bytes;
-}
-
 // FNV-1a, 64 bits (offset basis and prime from the FNV reference).
 std::uint64_t fnv1a64(const std::vector<unsigned char>& bytes) {
   std::uint64_t hash = 14695981039346656037ull;
@@ -99,6 +83,7 @@ std::vector<unsigned char> final_state(Scene scene, const std::string& solver, i
   scene.solver = solver;
   WorldSettings settings = world_settings(scene);
   settings.threads = threads;
+  settings.threads_min_bodies = 0;  // every golden scene's steps on the threads, however small
   World world = build_world(scene, settings);
   for (int step = 0; step < golden_steps; ++step) world.step();
   return state_bytes(world);

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <cstring>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -16,30 +15,18 @@
 #include "parallel/workers.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
+#include "support/world_state.h"
 
 using namespace lamina;
 
 namespace {
-
-// Every body's x, q, v and ω as bytes: equal bytes, equal bits (−0 and +0, and NaNs, told apart).
-std::vector<unsigned char> state_bytes(const World& world) {
-  std::vector<double> values;
-  for (const RigidBody& b : world.bodies()) {
-    values.insert(values.end(), b.x.data(), b.x.data() + 3);
-    values.insert(values.end(), b.q.coeffs().data(), b.q.coeffs().data() + 4);
-    values.insert(values.end(), b.v.data(), b.v.data() + 3);
-    values.insert(values.end(), b.angular_velocity.data(), b.angular_velocity.data() + 3);
-  }
-  std::vector<unsigned char> bytes(values.size() * sizeof(double));
-  if (!values.empty()) std::memcpy(bytes.data(), values.data(), bytes.size());
-  return bytes;
-}
 
 World world_of(const std::string& scene_name, const std::string& solver, int threads) {
   Scene scene = builtin_scene(scene_name);
   scene.solver = solver;
   WorldSettings settings = world_settings(scene);
   settings.threads = threads;
+  settings.threads_min_bodies = 0;  // small scenes too: their steps on the threads under test
   return build_world(scene, settings);
 }
 
@@ -216,6 +203,7 @@ TEST_SUITE("Threads") {
         const Scene scene = boxes_thrown(thrown);
         WorldSettings settings = world_settings(scene);
         settings.threads = threads;
+        settings.threads_min_bodies = 0;  // five bodies, stepped on the threads under test
         World world = build_world(scene, settings);
         CHECK_FALSE(world.first_non_finite_body());  // no step yet
         for (int k = 0; k < 108; ++k) {

@@ -48,8 +48,13 @@ void PgsSolver::use_workers(Workers* workers) {
   if (workers == nullptr || workers->count() < 2) workers = nullptr;
   if (workers == workers_) return;
   workers_ = workers;
-  // per part of each of two MLCPs (solve_both)
-  progress_.reset(workers_ != nullptr ? new Progress[2 * runs_on(workers_)] : nullptr);
+  // the counters kept when a World's steps go to one thread and back (WorldSettings::
+  // threads_min_bodies): made anew only for a larger team
+  const int count = workers_ != nullptr ? 2 * runs_on(workers_) : 0;
+  if (count > progress_count_) {
+    progress_.reset(new Progress[count]);
+    progress_count_ = count;
+  }
 }
 
 bool PgsSolver::plan_parts(const Mlcp& mlcp, int parts) {

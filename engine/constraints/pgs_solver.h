@@ -193,6 +193,7 @@ class PgsSolver {
   Workers* workers_ = nullptr;            // the threads, or none
   // per MLCP swept at once and per part: k·G + g + 1 once its pass k took group g
   std::unique_ptr<Progress[]> progress_;
+  int progress_count_ = 0;  // progress_'s counters, kept while the solves are on one thread
   // The last two plans made (a step's velocity plan serves its position MLCP too, unless joints'
   // rows add groups to the velocity MLCP alone), and the one the current solve sweeps by.
   std::array<PartPlan, 2> plans_;

@@ -28,6 +28,8 @@ void validate(const WorldSettings& s) {
   require(s.threads >= 1 && s.threads <= max_threads,
           "world: threads must be 1 to " + std::to_string(max_threads) + ", got " +
               std::to_string(s.threads));
+  require(s.threads_min_bodies >= 0,
+          "world: threads_min_bodies must be ≥ 0, got " + std::to_string(s.threads_min_bodies));
   require(s.position_iterations >= 1,
           "world: position_iterations must be ≥ 1, got " + std::to_string(s.position_iterations));
   validate(s.contact);
@@ -44,10 +46,7 @@ World::World(const WorldSettings& settings) : settings_(settings) {
     settings_.contact.slop = 0.0;
   }
   if (settings_.method) method_ = settings_.method();
-  if (settings_.threads > 1) {
-    workers_ = std::make_unique<Workers>(settings_.threads);
-    pgs_.use_workers(workers_.get());
-  }
+  if (settings_.threads > 1) workers_ = std::make_unique<Workers>(settings_.threads);
 }
 
 World::~World() = default;
@@ -122,7 +121,12 @@ StepTimes World::step_times_after_first() const {
 }
 
 void World::advance(WorldReport* report) {
-  const Workers::Awake awake(workers_.get());  // the threads wait spinning between the phases
+  // On the threads once the World has bodies enough: the same bits either way
+  const bool big_enough =
+      bodies_.size() >= static_cast<std::size_t>(settings_.threads_min_bodies);
+  team_ = big_enough ? workers_.get() : nullptr;
+  pgs_.use_workers(team_);
+  const Workers::Awake awake(team_);  // the threads wait spinning between the phases
   if (report != nullptr) {
     *report = WorldReport();  // a reused report keeps nothing of its last step
     report->time = time_;
@@ -145,7 +149,7 @@ void World::advance(WorldReport* report) {
     clock.lap(StepPhase::solve);
     // 7. eq. 2-1..2-8 under F_ext + F_c, with split impulse's push-out
     integrate_with_push_out(bodies_, split_impulse_.push_out(), settings_.step.dt,
-                            settings_.step.pitfalls, workers_.get());
+                            settings_.step.pitfalls, team_);
     clock.lap(StepPhase::integrate);
   }
   find_non_finite_body();
@@ -158,8 +162,8 @@ void World::advance(WorldReport* report) {
 void World::apply_forces() {
   // eq. 5-2: F_ext = m g on the dynamic bodies, on top of forces applied since the last step;
   // each run its share of the bodies, the share it integrates
-  const int runs = runs_on(workers_.get());
-  run_on(workers_.get(), [&](int t) {
+  const int runs = runs_on(team_);
+  run_on(team_, [&](int t) {
     const auto [first, last] = share_of(bodies_.size(), t, runs);
     for (std::size_t i = first; i < last; ++i) apply_gravity(bodies_[i], settings_.step.gravity);
   });
@@ -168,25 +172,25 @@ void World::apply_forces() {
 void World::detect_collisions() {
   poses_.resize(bodies_.size());
   boxes_.resize(bodies_.size());
-  const int runs = runs_on(workers_.get());
-  run_on(workers_.get(), [&](int t) {  // each run its share of the bodies
+  const int runs = runs_on(team_);
+  run_on(team_, [&](int t) {  // each run its share of the bodies
     const auto [first, last] = share_of(bodies_.size(), t, runs);
     for (std::size_t i = first; i < last; ++i) {
       poses_[i] = planar_pose(bodies_[i]);
       boxes_[i] = bounding_box(shapes_[i], poses_[i]);
     }
   });
-  sort_and_sweep(boxes_, sweep_memory_, candidate_pairs_, workers_.get());
+  sort_and_sweep(boxes_, sweep_memory_, candidate_pairs_, team_);
   // each run its share of the candidates, in order, its collisions appended in order
   fresh_of_thread_.resize(runs);
   // a flag per cached pair, set by the run that meets it among its candidates (one at most:
   // both are sorted by pair)
   recycled_.assign(cache_.pairs().size(), 0);
-  run_on(workers_.get(), [&](int t) {
+  run_on(team_, [&](int t) {
     const auto [first, last] = share_of(candidate_pairs_.size(), t, runs);
     find_collisions(first, last, runs == 1 ? fresh_ : fresh_of_thread_[t], recycled_);
   });
-  if (runs > 1) join_runs(fresh_of_thread_, fresh_, workers_.get());
+  if (runs > 1) join_runs(fresh_of_thread_, fresh_, team_);
 }
 
 void World::find_collisions(std::size_t first, std::size_t last,
@@ -217,7 +221,7 @@ void World::find_collisions(std::size_t first, std::size_t last,
 }
 
 void World::update_cache() {
-  cache_.update(fresh_, recycled_, poses_, shapes_, materials_, settings_.cache, workers_.get());
+  cache_.update(fresh_, recycled_, poses_, shapes_, materials_, settings_.cache, team_);
 }
 
 void World::build_rows() {
@@ -231,9 +235,9 @@ void World::build_rows() {
   // eq. 3-16: J B λ = η with B = M⁻¹ Jᵀ, η = ζ/Δt − J (V/Δt + M⁻¹ F_ext), assembled as the
   // contacts' rows are written (λ_exp = the cached λ, zero with the cache off), then the joints'
   const double dt = settings_.step.dt;
-  unconstrained_velocities(bodies_, dt, unconstrained_, workers_.get());
+  unconstrained_velocities(bodies_, dt, unconstrained_, team_);
   ContactRows contact_rows = cache_.rows(bodies_, settings_.contact, settings_.step, lambda_);
-  velocity_.assemble(bodies_, contact_rows, rows_, unconstrained_, dt, workers_.get());
+  velocity_.assemble(bodies_, contact_rows, rows_, unconstrained_, dt, team_);
   first_joint_row_ = static_cast<std::size_t>(velocity_.row_count()) - rows_.size();
   for (Joint& joint : joints_) joint.rows.first += static_cast<int>(first_joint_row_);
   // the joints' rows, λ_exp = last step's λ
@@ -248,7 +252,7 @@ void World::solve(WorldReport* report) {
   // Split impulse's position MLCP first: its ζ does not depend on the velocity λ, so that
   // without a report both are solved side by side (PgsSolver::solve_both)
   const bool push = split_impulse_.prepare(velocity_, cache_.pairs(), settings_.contact,
-                                           settings_.step, report != nullptr, workers_.get());
+                                           settings_.step, report != nullptr, team_);
   const Pitfalls pitfalls = settings_.step.pitfalls;
   // eq. 3-24 by Projected Gauss-Seidel, friction bounds ±μ λc read as λc changes
   if (push && report == nullptr) {
@@ -268,7 +272,7 @@ void World::solve(WorldReport* report) {
     }
   }
   remember_lambdas(report);
-  if (push) split_impulse_.take_push_out(pgs_, settings_.step.dt, workers_.get());
+  if (push) split_impulse_.take_push_out(pgs_, settings_.step.dt, team_);
 }
 
 void World::take_method_step(WorldReport* report) {
@@ -280,7 +284,7 @@ void World::take_method_step(WorldReport* report) {
         lambda_.data(), static_cast<Eigen::Index>(lambda_.size()));
   }
   const StepProblem problem{settings_,   first_joint_row_, cache_.pairs(), joint_views_,
-                            joint_rows_, velocity_,        workers_.get()};
+                            joint_rows_, velocity_,        team_};
   method_->take_step(problem, bodies_, lambda_, report);
   if (report != nullptr) {
     report->velocity.solution.lambda = Eigen::Map<const Eigen::VectorXd>(
@@ -296,7 +300,7 @@ void World::take_method_step(WorldReport* report) {
 }
 
 void World::remember_lambdas(WorldReport* report) {
-  cache_.store_lambdas(lambda_.data(), workers_.get());
+  cache_.store_lambdas(lambda_.data(), team_);
   joint_warm_start_.remember(rows_.data(), rows_.data() + rows_.size(),
                              lambda_.data() + first_joint_row_);
   if (report != nullptr) {
@@ -307,9 +311,9 @@ void World::remember_lambdas(WorldReport* report) {
 
 void World::find_non_finite_body() {
   // each run its share of the bodies, the share it integrated; then the first of the runs' firsts
-  const int runs = runs_on(workers_.get());
+  const int runs = runs_on(team_);
   std::array<std::size_t, max_runs> first_of_run{};  // per run; bodies_.size(): none
-  run_on(workers_.get(), [&](int t) {
+  run_on(team_, [&](int t) {
     const auto [first, last] = share_of(bodies_.size(), t, runs);
     std::size_t i = first;
     while (i < last && bodies_[i].has_finite_state()) ++i;

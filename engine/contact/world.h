@@ -54,6 +54,11 @@ struct WorldSettings {
   // number gives the same state bit for bit; only the time differs (more threads than cores:
   // far slower, docs/performance.md).
   int threads = 1;
+  // The bodies a World needs before its steps are taken on those threads: a smaller World's
+  // pieces of work are too small to pay for handing them over between threads, and its steps
+  // are taken on the calling thread, with the same bits (docs/performance.md, *Small worlds on
+  // one thread*). 0: every step on the threads.
+  int threads_min_bodies = 128;
 };
 
 class World {
@@ -94,6 +99,9 @@ class World {
   // Steps taken by all the Worlds of this process so far: how a test sees that a program
   // simulated its run once (tests/cli/test_cli_simulation.cpp).
   static long steps_in_process();
+  // Whether the last step was taken on the threads the settings ask for (more than one, and
+  // bodies enough: WorldSettings::threads_min_bodies).
+  bool stepped_on_threads() const { return team_ != nullptr; }
   // The wall-clock time of each phase of the steps taken so far (step_times.h).
   const StepTimes& step_times() const { return step_times_; }
   // The same over the steps after the first, which does one-off work (every buffer grows to the
@@ -170,6 +178,8 @@ class World {
   std::vector<double> lambda_;               // its λ, in N: the warm start λ_exp, then solved
   SplitImpulse split_impulse_;               // the position MLCP and each body's push-out
   std::unique_ptr<Workers> workers_;         // the threads past the first, when settings ask
+  Workers* team_ = nullptr;                  // this step's threads: workers_ in a World of
+                                             // bodies enough (threads_min_bodies), else none
   PgsSolver pgs_;                            // the sweeps' a = B λ, for both MLCPs in turn
   std::vector<RowRange> joint_rows_;         // each joint's rows, for a StepMethod
 };

@@ -54,8 +54,13 @@ void add_run_options(CLI::App& run, RunOptions& o, std::string& explain_format) 
                  "threads that take each step: collision, the contact cache, the rows and the "
                  "integration split between them, PGS's sweeps a pipeline; the same state, trace "
                  "and frames bit for bit on any number, only faster up to the machine's cores "
-                 "(docs/performance.md)")
+                 "and for scenes of --threads-min-bodies bodies or more (docs/performance.md)")
       ->type_name("N")->check(CLI::Range(1, 64))->capture_default_str();
+  run.add_option("--threads-min-bodies", o.threads_min_bodies,
+                 "the bodies a scene needs before its steps are taken on --threads; a smaller "
+                 "scene's steps are faster on one thread, with the same bits (0: always on "
+                 "--threads)")
+      ->type_name("N")->check(CLI::Range(0, 1000000000))->capture_default_str();
   run.add_flag("--allow-large", o.allow_large,
                "run a scene past the work limits (more than 5e7 body-steps, 1e5 overlapping pairs "
                "at t = 0, or 1e10 frame pixels: minutes of work; docs/lamina-command.md)");

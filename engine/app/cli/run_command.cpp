@@ -31,6 +31,7 @@ WorldSettings run_settings(const RunOptions& o, Scene& scene) {
   WorldSettings settings = checked_settings(scene, o.scene);
   settings.cache.enabled = !o.no_cache;
   settings.threads = o.threads;
+  settings.threads_min_bodies = o.threads_min_bodies;
   return settings;
 }
 
@@ -42,6 +43,20 @@ void note_threads_beyond_cores(int threads) {
   const int cores = machine_cores();
   std::cerr << "lamina: note: --threads " << threads << " on a machine of " << cores
             << " cores is slower than --threads " << cores << " (the same state bit for bit)\n";
+}
+
+// A World of fewer bodies than threads_min_bodies takes its steps on one thread, faster than on
+// more (docs/performance.md, "Small worlds on one thread"). Said on stderr, so that a --threads
+// that changes nothing is not taken for a measurement of threads.
+void note_one_thread(const WorldSettings& settings, const World& world) {
+  const std::size_t bodies = world.bodies().size();
+  if (settings.threads < 2 || bodies >= static_cast<std::size_t>(settings.threads_min_bodies)) {
+    return;
+  }
+  std::cerr << "lamina: note: the scene's " << bodies << " bodies are fewer than "
+            << "--threads-min-bodies " << settings.threads_min_bodies
+            << ": its steps are taken on one thread, which is faster (the same state bit for "
+               "bit)\n";
 }
 
 // Steps 0 .. K − 1, then step K with its report, printed as the tutorials print theirs.
@@ -256,6 +271,7 @@ void run_scene(Scene scene, const RunOptions& o) {
     check_work(scene, o.explain ? *o.explain + 1 : steps, frames, o.render.size, o.scene);
   }
   Simulation simulation(std::move(scene), settings, o.scene);
+  note_one_thread(settings, simulation.world());
   note_stop_signals();
   if (o.explain) return explain_step(simulation, *o.explain, o.explain_json);
   const std::unique_ptr<tutorial::FrameRenderer> renderer = frame_renderer(o);

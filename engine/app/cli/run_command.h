@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/harness/render_request.h"
+#include "contact/world.h"
 #include "scene/scene.h"
 
 namespace lamina::cli {
@@ -25,6 +26,7 @@ struct RunOptions {
   bool no_cache = false;                        // --no-cache
   bool profile = false;                         // --profile
   int threads = 1;                              // --threads N: threads per step, same bits
+  int threads_min_bodies = WorldSettings().threads_min_bodies;  // --threads-min-bodies N
   std::optional<std::filesystem::path> trace;   // --trace FILE
   std::optional<std::filesystem::path> frames;  // --frames DIR
   int every = 1;                                // --every K: steps between frames
