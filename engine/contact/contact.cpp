@@ -2,6 +2,9 @@
 
 namespace lamina {
 
+// Two cache lines, as contact.h lays it out (the merge and the rows copy and read every pair).
+static_assert(sizeof(Contact) <= 128, "a Contact outgrew two cache lines");
+
 const char* origin_name(ContactOrigin origin) {
   switch (origin) {
     case ContactOrigin::fresh:
@@ -36,7 +39,7 @@ Contact make_contact(const Collision& collision, const Pose2& pose1, const Pose2
     contact.anchor[k] = pose_of(k, pose1, pose2).to_body(p[k]);
   }
   contact.local_normal = pose_of(ref, pose1, pose2).R.transpose() * collision.normal;
-  contact.reference = ref;
+  contact.reference = static_cast<std::int8_t>(ref);
   contact.origin = ContactOrigin::fresh;
   place(contact, pose1, pose2);
   return contact;
