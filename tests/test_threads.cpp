@@ -21,15 +21,6 @@ using namespace lamina;
 
 namespace {
 
-World world_of(const std::string& scene_name, const std::string& solver, int threads) {
-  Scene scene = builtin_scene(scene_name);
-  scene.solver = solver;
-  WorldSettings settings = world_settings(scene);
-  settings.threads = threads;
-  settings.threads_min_bodies = 0;  // small scenes too: their steps on the threads under test
-  return build_world(scene, settings);
-}
-
 // Five boxes falling apart in the air, those named in `thrown` thrown sideways at 1e308 m/s, the
 // first to the right and the others to the left (two thrown the same way would be at the same
 // x, rounded, after one step, and collide): a thrown box's x overflows to ±inf in step k = 107

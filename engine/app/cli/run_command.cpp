@@ -14,8 +14,8 @@
 #include "app/harness/viewer.h"
 #include "app/views/contact/world_explanation.h"
 #include "motion/pitfalls.h"
-#include "render/utf8.h"
 #include "parallel/workers.h"
+#include "render/utf8.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_world.h"
 
